@@ -1,0 +1,25 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <iosfwd>
+
+namespace mink::cli {
+
+// Each command registers its subcommand and returns the action that runs it; the action
+// returns the exit code.
+using Action = std::function<int()>;
+
+struct Streams {
+  std::istream& in;
+  std::ostream& out;
+  std::ostream& err;
+};
+
+Action add_hull_command(CLI::App& app, Streams streams);
+Action add_demo_command(CLI::App& app, Streams streams);
+
+// Runs `mink` with the given arguments; what main() does, callable from tests.
+int run(int argc, const char* const* argv, Streams streams);
+
+}  // namespace mink::cli

@@ -1,0 +1,18 @@
+#pragma once
+
+#include <exception>
+
+namespace mink::cli {
+
+// The exit codes every `mink` command uses (README, "Exit codes").
+enum ExitCode : int {
+  kSuccess = 0,
+  kInternalError = 1,  // a bug or an unexpected system failure
+  kBadInput = 2,       // usage errors, unreadable files, malformed lines, non-finite values
+  kDegenerate = 3,     // a point set with no area: fewer than 3 distinct non-collinear points
+};
+
+// Maps an exception from a command to its exit code and prints "mink: <message>" to stderr.
+int report_error(const std::exception& error);
+
+}  // namespace mink::cli

@@ -1,0 +1,42 @@
+#include <iostream>
+#include <map>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+
+namespace mink::cli {
+
+int run(int argc, const char* const* argv, Streams streams) {
+  CLI::App app{
+      "mink - Minkowski, a 2D rigid-body physics sandbox built on exact convex hulls and GJK.\n"
+      "Exit codes: 0 success, 1 internal error, 2 bad input or usage, 3 degenerate point set.",
+      "mink"};
+  app.require_subcommand(1);
+  app.set_help_all_flag("--help-all", "help for every command");
+  std::map<std::string, Action> actions;
+  actions["hull"] = add_hull_command(app, streams);
+  actions["demo"] = add_demo_command(app, streams);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    streams.out << app.help();
+    return kSuccess;
+  } catch (const CLI::CallForAllHelp&) {
+    streams.out << app.help("", CLI::AppFormatMode::All);
+    return kSuccess;
+  } catch (const CLI::ParseError& error) {
+    // Help for a subcommand arrives as CallForHelp from that subcommand's parse.
+    streams.err << "mink: " << error.what() << "\nRun 'mink --help' for usage.\n";
+    return kBadInput;
+  }
+  for (const CLI::App* command : app.get_subcommands()) {
+    try {
+      return actions.at(command->get_name())();
+    } catch (const std::exception& error) {
+      return report_error(error);
+    }
+  }
+  return kBadInput;
+}
+
+}  // namespace mink::cli

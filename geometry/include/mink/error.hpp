@@ -1,0 +1,38 @@
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace mink {
+
+// Root of every error Minkowski raises at an API boundary, so callers can catch one type.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A parameter outside its documented domain (negative scale, unknown algorithm name, ...).
+class InvalidArgumentError : public Error {
+ public:
+  using Error::Error;
+};
+
+// A coordinate that is NaN or infinite; `index` names the offending point.
+class NonFiniteInputError : public Error {
+ public:
+  explicit NonFiniteInputError(std::size_t index)
+      : Error("point " + std::to_string(index) + " has a non-finite coordinate"), index_(index) {}
+  std::size_t index() const noexcept { return index_; }
+
+ private:
+  std::size_t index_;
+};
+
+// Input with no area: fewer than three distinct, non-collinear points.
+class DegenerateInputError : public Error {
+ public:
+  using Error::Error;
+};
+
+}  // namespace mink

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "mink/geometry/convex_hull.hpp"
+
+namespace mink {
+
+// Graham scan (paper 4.1.1): sort around the lowest-x point by exact orientation, not by
+// atan2, ties by distance; keep left turns. O(n log n).
+ConvexHull graham_hull(std::span<const Vec2> points);
+
+namespace detail {
+// The scan on any finite input, degenerate too: appends the CCW ring (1, 2 or more vertices,
+// starting at the lowest-x then lowest-y point) to `ring`. `scratch` is reused storage.
+void graham_scan(std::span<const Vec2> points, std::vector<Vec2>& scratch,
+                 std::vector<Vec2>& ring);
+}  // namespace detail
+
+}  // namespace mink

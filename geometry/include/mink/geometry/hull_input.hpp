@@ -1,0 +1,14 @@
+#pragma once
+
+#include <span>
+
+#include "mink/geometry/types.hpp"
+
+namespace mink {
+
+// The precondition every hull algorithm checks first: all coordinates finite (else
+// NonFiniteInputError with the point's index) and at least three distinct points not all on one
+// line (else DegenerateInputError). O(n); usually stops early on the second condition.
+void validate_hull_input(std::span<const Vec2> points);
+
+}  // namespace mink
