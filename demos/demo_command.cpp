@@ -43,9 +43,9 @@ void print_hull(std::ostream& out, const char* title, const ConvexHull& hull, do
   const AreaProperties properties = area_properties(hull.vertices());
   char line[160];
   std::snprintf(line, sizeof line,
-                "%s: %zu vertices, area %.6g, centroid (%.6g, %.6g), median build %.1f us\n",
-                title, hull.size(), properties.area, properties.centroid.x(),
-                properties.centroid.y(), micros);
+                "%s: %zu vertices, area %.6g, centroid (%.6g, %.6g), median build %.1f us\n", title,
+                hull.size(), properties.area, properties.centroid.x(), properties.centroid.y(),
+                micros);
   out << line;
   for (const Vec2& v : hull.vertices()) {
     std::snprintf(line, sizeof line, "  %.17g %.17g\n", v.x(), v.y());
@@ -70,8 +70,9 @@ int run_demo(const DemoSettings& settings, Streams streams) {
 Action add_demo_command(CLI::App& app, Streams streams) {
   auto settings = std::make_shared<DemoSettings>();
   CLI::App* command = app.add_subcommand(
-      "demo", "The main job: the paper's two random point sets hulled by Chan and by divide "
-              "and conquer, printed with timings.");
+      "demo",
+      "The main job: the paper's two random point sets hulled by Chan and by divide "
+      "and conquer, printed with timings.");
   command->add_option("--seed", settings->seed, "random seed (default 2013)");
   command->add_option("--points", settings->count, "points in each set (default 500)")
       ->check(CLI::Range(std::size_t{3}, std::size_t{100'000'000}));

@@ -64,8 +64,9 @@ Action add_hull_command(CLI::App& app, Streams streams) {
       "duplicate or collinear vertices.\n"
       "Exit codes: 0 success; 2 malformed line or non-finite value ('line N: ...' on stderr) or\n"
       "unreadable file; 3 fewer than 3 distinct non-collinear points.");
-  command->add_option("--algorithm,-a", settings->algorithm,
-                      "chan (default), divide-conquer, graham, jarvis or monotone-chain")
+  command
+      ->add_option("--algorithm,-a", settings->algorithm,
+                   "chan (default), divide-conquer, graham, jarvis or monotone-chain")
       ->check(CLI::IsMember({"chan", "divide-conquer", "graham", "jarvis", "monotone-chain"}));
   command->add_option("input", settings->input, "point file, or - for standard input (default)");
   command->add_flag("--time", settings->time, "print the time to build the hull alone to stderr");

@@ -7,7 +7,9 @@ namespace mink::cli {
 
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool is_blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r';
+}
 
 void skip_blanks(std::string_view text, std::size_t& at) {
   while (at < text.size() && is_blank(text[at])) ++at;
@@ -29,9 +31,8 @@ Real parse_number(std::string_view text, std::size_t& at, std::size_t line_numbe
       ++token_end;
     }
     const std::string token(text.substr(at, token_end - at));
-    throw ParseError(line_number, token.empty()
-                                      ? std::string("missing ") + which + " coordinate"
-                                      : "'" + token + "' is not a number");
+    throw ParseError(line_number, token.empty() ? std::string("missing ") + which + " coordinate"
+                                                : "'" + token + "' is not a number");
   }
   if (!std::isfinite(value)) {
     throw ParseError(line_number, std::string(which) + " coordinate is not finite");
@@ -58,8 +59,8 @@ bool parse_point_line(std::string_view line, std::size_t line_number, Vec2& poin
   const Real y = parse_number(line, at, line_number, "y");
   skip_blanks(line, at);
   if (at != line.size()) {
-    throw ParseError(line_number, "unexpected '" + std::string(line.substr(at)) +
-                                      "' after the two coordinates");
+    throw ParseError(line_number,
+                     "unexpected '" + std::string(line.substr(at)) + "' after the two coordinates");
   }
   point = Vec2(x, y);
   return true;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "mink/error.hpp"
 #include "mink/geometry/hull_input.hpp"
@@ -13,32 +14,117 @@ namespace mink {
 
 namespace {
 
-// One edge of the extreme polygon as a half-plane test: (p - origin) x direction <= -margin
+// One edge of the extreme polygon as a half-plane test: (p - origin) x direction > margin
 // means p is certainly strictly left of the edge.
 struct EdgeTest {
   Real origin_x, origin_y, dx, dy, margin;
 };
 
+// Quick accepts for the bulk of the points: an axis-aligned box and a diamond
+// |x - cx| + |y - cy| < r, both checked to lie inside the extreme polygon before use.
+struct QuickInside {
+  Real min_x = 0, max_x = 0, min_y = 0, max_y = 0;  // box; empty when min >= max
+  Real centre_x = 0, centre_y = 0, radius = 0;      // diamond; empty when radius is 0
+
+  bool contains(const Vec2& p) const {
+    const bool in_box = (p.x() > min_x) & (p.x() < max_x) & (p.y() > min_y) & (p.y() < max_y);
+    const bool in_diamond = std::abs(p.x() - centre_x) + std::abs(p.y() - centre_y) < radius;
+    return in_box | in_diamond;
+  }
+};
+
+bool strictly_inside(std::span<const Vec2> ccw_polygon, const Vec2& p) {
+  for (std::size_t i = 0; i < ccw_polygon.size(); ++i) {
+    if (orient2d(ccw_polygon[i], ccw_polygon[(i + 1) % ccw_polygon.size()], p) <= 0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// A box and a diamond about the mean of the polygon's vertices, each verified exactly to lie
+// strictly inside the polygon; a shape that cannot be verified is left empty.
+QuickInside quick_inside(std::span<const Vec2> polygon) {
+  Vec2 centre(0, 0);
+  for (const Vec2& v : polygon) centre += v / static_cast<Real>(polygon.size());
+  QuickInside quick;
+  if (!strictly_inside(polygon, centre)) return quick;
+  const auto all_inside = [&](std::initializer_list<Vec2> corners) {
+    return std::all_of(corners.begin(), corners.end(),
+                       [&](const Vec2& c) { return strictly_inside(polygon, c); });
+  };
+
+  // Start from generous guesses (a square inscribed in a circle spans 0.71 of its bounding
+  // box; a diamond reaches the nearest vertex in the L1 sense) and shrink until the exact
+  // check passes.
+  Real half_x = 0, half_y = 0, radius = INFINITY;
+  for (const Vec2& v : polygon) {
+    const Vec2 d = v - centre;
+    half_x = std::max(half_x, std::abs(d.x()));
+    half_y = std::max(half_y, std::abs(d.y()));
+    radius = std::min(radius, std::abs(d.x()) + std::abs(d.y()));
+  }
+  half_x *= 0.75;
+  half_y *= 0.75;
+  constexpr int kAttempts = 40;
+  constexpr Real kShrink = 0.95;
+  for (int attempt = 0; attempt < kAttempts; ++attempt, half_x *= kShrink, half_y *= kShrink) {
+    if (all_inside({centre + Vec2(-half_x, -half_y), centre + Vec2(half_x, -half_y),
+                    centre + Vec2(half_x, half_y), centre + Vec2(-half_x, half_y)})) {
+      quick.min_x = centre.x() - half_x;
+      quick.max_x = centre.x() + half_x;
+      quick.min_y = centre.y() - half_y;
+      quick.max_y = centre.y() + half_y;
+      break;
+    }
+  }
+  for (int attempt = 0; attempt < kAttempts; ++attempt, radius *= kShrink) {
+    if (all_inside({centre + Vec2(-radius, 0), centre + Vec2(radius, 0), centre + Vec2(0, -radius),
+                    centre + Vec2(0, radius)})) {
+      // The floating-point diamond test errs by a few ulps; testing against a radius a
+      // millionth smaller than the verified one keeps every accepted point inside.
+      quick.centre_x = centre.x();
+      quick.centre_y = centre.y();
+      quick.radius = radius * (1 - 1e-6);
+      break;
+    }
+  }
+  return quick;
+}
+
 }  // namespace
 
 std::vector<Vec2> akl_toussaint_filter(std::span<const Vec2> points) {
-  validate_hull_input(points);
-  // Extremes in eight directions: +-x, +-y, +-(x + y), +-(x - y). Floating-point sums only
-  // choose which input points span the polygon; the polygon itself is made exactly.
-  std::array<std::size_t, 8> extreme{};
-  std::array<Real, 8> best;
+  if (points.size() < 3) validate_hull_input(points);  // throws with the usual message
+  // Extremes in sixteen directions, found in the same pass that checks every coordinate is
+  // finite. Floating-point scores only choose which input points span the polygon; the
+  // polygon itself is built exactly. Sixteen rather than Akl and Toussaint's four or eight:
+  // on a uniform disk it leaves about 3% of the points instead of 10% (or 36%).
+  constexpr int kDirections = 16;
+  std::array<Real, kDirections> cos_table;
+  std::array<Real, kDirections> sin_table;
+  for (int k = 0; k < kDirections; ++k) {
+    cos_table[k] = std::cos(2 * std::numbers::pi * k / kDirections);
+    sin_table[k] = std::sin(2 * std::numbers::pi * k / kDirections);
+  }
+  std::array<std::size_t, kDirections> extreme{};
+  std::array<Real, kDirections> best;
   best.fill(-INFINITY);
+  bool all_finite = true;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Real x = points[i].x();
     const Real y = points[i].y();
-    const std::array<Real, 8> score = {x, x + y, y, y - x, -x, -x - y, -y, x - y};
-    for (int k = 0; k < 8; ++k) {
-      if (score[k] > best[k]) {
-        best[k] = score[k];
+    all_finite &= (x - x == 0) && (y - y == 0);  // false for NaN and infinities
+    for (int k = 0; k < kDirections; ++k) {
+      const Real score = cos_table[k] * x + sin_table[k] * y;
+      if (score > best[k]) {
+        best[k] = score;
         extreme[k] = i;
       }
     }
   }
+  if (!all_finite) validate_hull_input(points);  // throws naming the first bad point
+
   std::vector<Vec2> corners;
   for (std::size_t index : extreme) corners.push_back(points[index]);
   std::sort(corners.begin(), corners.end(), lex_less);
@@ -48,7 +134,8 @@ std::vector<Vec2> akl_toussaint_filter(std::span<const Vec2> points) {
     const ConvexHull inner = monotone_chain_hull(corners);
     polygon.assign(inner.vertices().begin(), inner.vertices().end());
   } catch (const DegenerateInputError&) {
-    return std::vector<Vec2>(points.begin(), points.end());  // extremes collinear: keep all
+    validate_hull_input(points);  // throws if the whole set is degenerate too
+    return std::vector<Vec2>(points.begin(), points.end());
   }
 
   Real min_x = INFINITY, max_x = -INFINITY, min_y = INFINITY, max_y = -INFINITY;
@@ -60,9 +147,10 @@ std::vector<Vec2> akl_toussaint_filter(std::span<const Vec2> points) {
   }
   const Real width = max_x - min_x;
   const Real height = max_y - min_y;
-  // Inside the box the floating-point edge test errs by a few ulps of |dx| * height +
-  // |dy| * width; demand a
-  // margin well above that (and above the underflow level) before dropping a point.
+  // Inside the polygon's bounding box the floating-point edge test errs by a few ulps of
+  // |dx| * height + |dy| * width; demand a margin well above that (and above the underflow
+  // level) before dropping a point. Outside the box the bound does not hold, but such a point
+  // is outside the polygon anyway.
   constexpr Real kRelativeMargin = 1e-14;
   constexpr Real kAbsoluteMargin = 0x1p-1000;
   std::vector<EdgeTest> edges;
@@ -71,16 +159,16 @@ std::vector<Vec2> akl_toussaint_filter(std::span<const Vec2> points) {
     const Vec2& b = polygon[(i + 1) % polygon.size()];
     const Real dx = b.x() - a.x();
     const Real dy = b.y() - a.y();
-    edges.push_back({a.x(), a.y(), dx, dy,
-                     kRelativeMargin * (std::abs(dx) * height + std::abs(dy) * width) +
-                         kAbsoluteMargin});
+    edges.push_back(
+        {a.x(), a.y(), dx, dy,
+         kRelativeMargin * (std::abs(dx) * height + std::abs(dy) * width) + kAbsoluteMargin});
   }
+  const QuickInside quick = quick_inside(polygon);
 
   std::vector<Vec2> survivors;
-  survivors.reserve(points.size() / 4);
+  survivors.reserve(points.size() / 8);
   for (const Vec2& p : points) {
-    // Outside the polygon's bounding box the error bound below does not hold; such a point is
-    // outside the polygon anyway.
+    if (quick.contains(p)) continue;
     bool inside = p.x() >= min_x && p.x() <= max_x && p.y() >= min_y && p.y() <= max_y;
     for (const EdgeTest& e : edges) {
       const Real cross = e.dx * (p.y() - e.origin_y) - e.dy * (p.x() - e.origin_x);

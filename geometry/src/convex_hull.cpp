@@ -10,6 +10,7 @@
 #include "mink/geometry/chan.hpp"
 #include "mink/geometry/divide_conquer.hpp"
 #include "mink/geometry/graham.hpp"
+#include "mink/geometry/hull_input.hpp"
 #include "mink/geometry/jarvis.hpp"
 #include "mink/geometry/monotone_chain.hpp"
 #include "mink/geometry/orientation.hpp"
@@ -42,11 +43,7 @@ bool is_strictly_convex_ccw(std::span<const Vec2> ring) {
 }
 
 ConvexHull ConvexHull::from_ccw_vertices(std::vector<Vec2> vertices) {
-  for (std::size_t i = 0; i < vertices.size(); ++i) {
-    if (!std::isfinite(vertices[i].x()) || !std::isfinite(vertices[i].y())) {
-      throw NonFiniteInputError(i);
-    }
-  }
+  require_finite(vertices);
   if (vertices.size() < 3) {
     throw DegenerateInputError("a convex hull needs at least 3 vertices, got " +
                                std::to_string(vertices.size()));
@@ -96,10 +93,11 @@ HullAlgorithm parse_hull_algorithm(std::string_view name) {
                              "monotone-chain)");
 }
 
-std::span<const HullAlgorithm> all_hull_algorithms() noexcept { return kAlgorithms; }
+std::span<const HullAlgorithm> all_hull_algorithms() noexcept {
+  return kAlgorithms;
+}
 
-ConvexHull build_hull(std::span<const Vec2> points, HullAlgorithm algorithm,
-                      HullOptions options) {
+ConvexHull build_hull(std::span<const Vec2> points, HullAlgorithm algorithm, HullOptions options) {
   std::vector<Vec2> survivors;
   if (options.prefilter) {
     survivors = akl_toussaint_filter(points);  // validates, keeps every hull vertex

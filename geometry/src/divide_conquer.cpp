@@ -8,21 +8,12 @@
 #include "mink/geometry/hull_input.hpp"
 #include "mink/geometry/melkman.hpp"
 #include "mink/geometry/orientation.hpp"
+#include "radix_sort.hpp"
 #include "wrap_order.hpp"
 
 namespace mink {
 
 namespace detail {
-
-namespace {
-
-// Unsigned key whose order is the order of the doubles (-0 and +0 land next to each other).
-std::uint64_t ordered_bits(Real value) {
-  const auto bits = std::bit_cast<std::uint64_t>(value);
-  return (bits >> 63) != 0 ? ~bits : bits | (std::uint64_t{1} << 63);
-}
-
-}  // namespace
 
 void sort_lexicographic(std::vector<Vec2>& points) {
   const std::size_t n = points.size();
@@ -30,24 +21,8 @@ void sort_lexicographic(std::vector<Vec2>& points) {
     std::sort(points.begin(), points.end(), lex_less);
     return;
   }
-  // LSD radix sort on x in six 11-bit digits; digits shared by every point are skipped.
-  constexpr int kDigitBits = 11;
-  constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
-  std::vector<Vec2> buffer(n);
-  std::vector<std::size_t> count(kBuckets);
-  for (int shift = 0; shift < 64; shift += kDigitBits) {
-    std::fill(count.begin(), count.end(), 0);
-    for (const Vec2& p : points) ++count[(ordered_bits(p.x()) >> shift) & (kBuckets - 1)];
-    if (std::find(count.begin(), count.end(), n) != count.end()) continue;
-    std::size_t sum = 0;
-    for (std::size_t& c : count) {
-      const std::size_t here = c;
-      c = sum;
-      sum += here;
-    }
-    for (const Vec2& p : points) buffer[count[(ordered_bits(p.x()) >> shift) & (kBuckets - 1)]++] = p;
-    points.swap(buffer);
-  }
+  std::vector<Vec2> buffer;
+  radix_sort(points, buffer, [](const Vec2& p) { return ordered_bits(p.x()); });
   // Equal x: order by y. Runs are short unless the points share columns.
   for (std::size_t begin = 0; begin < n;) {
     std::size_t end = begin + 1;
@@ -69,8 +44,8 @@ std::vector<Vec2> merge_by_common_tangents(std::span<const Vec2> left,
   const auto prev_l = [nl](std::size_t i) { return i == 0 ? nl - 1 : i - 1; };
   const auto next_r = [nr](std::size_t i) { return i + 1 == nr ? 0 : i + 1; };
   const auto prev_r = [nr](std::size_t i) { return i == 0 ? nr - 1 : i - 1; };
-  const std::size_t left_last = static_cast<std::size_t>(
-      std::max_element(left.begin(), left.end(), lex_less) - left.begin());
+  const std::size_t left_last =
+      static_cast<std::size_t>(std::max_element(left.begin(), left.end(), lex_less) - left.begin());
   const std::size_t right_first = static_cast<std::size_t>(
       std::min_element(right.begin(), right.end(), lex_less) - right.begin());
 
@@ -113,8 +88,8 @@ std::vector<Vec2> merge_by_common_tangents(std::span<const Vec2> left,
   // Walk CCW: left hull from its lowest (x, y) vertex (a vertex of the merged hull) to the
   // lower tangent, the right hull from the lower to the upper tangent, then the left hull back.
   // Vertices that end up collinear at the tangents are dropped on the way.
-  const std::size_t left_first = static_cast<std::size_t>(
-      std::min_element(left.begin(), left.end(), lex_less) - left.begin());
+  const std::size_t left_first =
+      static_cast<std::size_t>(std::min_element(left.begin(), left.end(), lex_less) - left.begin());
   std::vector<Vec2> merged;
   merged.reserve(nl + nr);
   const auto push = [&merged](const Vec2& v) {
@@ -162,8 +137,9 @@ ConvexHull divide_conquer_hull(std::span<const Vec2> points, DivideConquerOption
   detail::sort_lexicographic(sorted);
   // The merge needs the halves strictly apart in (x, y) order, so no point may repeat.
   sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
-  const std::size_t leaf_size =
-      options.leaf_size == 0 ? (sorted.size() + 1) / 2 : std::max<std::size_t>(options.leaf_size, 1);
+  const std::size_t leaf_size = options.leaf_size == 0
+                                    ? (sorted.size() + 1) / 2
+                                    : std::max<std::size_t>(options.leaf_size, 1);
   return detail::hull_from_ccw_ring(detail::hull_of_sorted_range(sorted, leaf_size));
 }
 

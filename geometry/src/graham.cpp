@@ -1,22 +1,108 @@
 #include "mink/geometry/graham.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <utility>
 
 #include "mink/geometry/hull_input.hpp"
 #include "mink/geometry/orientation.hpp"
+#include "radix_sort.hpp"
 
 namespace mink {
 
 namespace detail {
 
-void graham_scan(std::span<const Vec2> points, std::vector<Vec2>& scratch,
-                 std::vector<Vec2>& ring) {
+namespace {
+
+constexpr std::size_t kSmall = 16;
+
+// A pseudo-angle of p seen from the pivot: strictly increasing with the true angle on
+// (-90, 90] degrees, computed with relative error below 6 ulps (plus 2^-1000 absolute, for
+// underflow) while the differences stay finite.
+inline Real pseudo_angle(const Vec2& pivot, const Vec2& p) {
+  const Real dx = p.x() - pivot.x();
+  const Real dy = p.y() - pivot.y();
+  return dy / (dx + std::abs(dy));
+}
+
+// Could rounding have put these two keys (in this order) the wrong way round?
+inline bool keys_indistinct(Real earlier, Real later) {
+  constexpr Real kRelativeTolerance = 1e-15;
+  constexpr Real kAbsoluteTolerance = 0x1p-1000;
+  return later - earlier <=
+         kRelativeTolerance * (std::abs(later) + std::abs(earlier)) + kAbsoluteTolerance;
+}
+
+// Larger inputs: sort by the pseudo-angle, then settle every run of keys too close for their
+// rounding errors to tell apart with the exact comparison. A pair the keys misorder differs
+// by less than the tolerance, and so does every key between them, so the pair shares a run.
+// Fills scratch.sorted with the points other than the pivot; returns false when a key cannot
+// be trusted (a difference overflowed). Touches 32 bytes a point: fresh memory is slow to
+// fault in, so nothing is stored twice.
+template <typename Precedes>
+bool sort_by_pseudo_angle(const Vec2& pivot, std::span<const Vec2> points, GrahamScratch& scratch,
+                          Precedes precedes) {
+  std::vector<std::uint64_t>& order = scratch.order;  // high 32 key bits, then the index
+  order.clear();
+  bool reliable = true;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (points[i] == pivot) continue;
+    const Real dx = points[i].x() - pivot.x();
+    const Real dy = points[i].y() - pivot.y();
+    const Real key = dy / (dx + std::abs(dy));
+    reliable &= std::isfinite(key) && dx < 0x1p+1000 && std::abs(dy) < 0x1p+1000;
+    order.push_back((ordered_bits(key) & 0xffffffff00000000ULL) | i);
+  }
+  if (!reliable) return false;
+  const std::size_t n = order.size();
+  if (n >= 4096) {
+    radix_sort(
+        order, scratch.buffer, [](std::uint64_t item) { return item; }, 32);
+  } else {
+    std::sort(order.begin(), order.end());  // the low bits are indices: only ties see them
+  }
+  std::vector<Vec2>& sorted = scratch.sorted;
+  std::vector<Real>& keys = scratch.keys;
+  sorted.resize(n);
+  keys.resize(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    sorted[j] = points[order[j] & 0xffffffffULL];
+    keys[j] = pseudo_angle(pivot, sorted[j]);
+  }
+  // Items that share their high 32 key bits came out in input order: order them by the key.
+  for (std::size_t j = 1; j < n; ++j) {
+    if ((order[j] >> 32) != (order[j - 1] >> 32) || keys[j - 1] <= keys[j]) continue;
+    const Real key = keys[j];
+    const Vec2 point = sorted[j];
+    std::size_t k = j;
+    for (; k > 0 && keys[k - 1] > key; --k) {
+      keys[k] = keys[k - 1];
+      sorted[k] = sorted[k - 1];
+    }
+    keys[k] = key;
+    sorted[k] = point;
+  }
+  for (std::size_t begin = 0; begin < n;) {
+    std::size_t end = begin + 1;
+    while (end < n && keys_indistinct(keys[end - 1], keys[end])) ++end;
+    if (end - begin > 1) {
+      std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(begin),
+                sorted.begin() + static_cast<std::ptrdiff_t>(end), precedes);
+    }
+    begin = end;
+  }
+  return true;
+}
+
+}  // namespace
+
+void graham_scan(std::span<const Vec2> points, GrahamScratch& scratch, std::vector<Vec2>& ring) {
   if (points.empty()) return;
   const Vec2 pivot = *std::min_element(points.begin(), points.end(), lex_less);
-  scratch.clear();
-  for (const Vec2& p : points) {
-    if (p != pivot) scratch.push_back(p);
-  }
   // Every other point lies right of or straight above the pivot, a range of directions
   // narrower than a half-turn, so orientation is a strict weak order on them. Points on one
   // ray from the pivot go nearest first; along such a ray (x, y) order is distance order.
@@ -25,11 +111,61 @@ void graham_scan(std::span<const Vec2> points, std::vector<Vec2>& scratch,
     if (turn != 0) return turn > 0;
     return lex_less(a, b);
   };
-  std::sort(scratch.begin(), scratch.end(), precedes);
+
+  if (points.size() <= kSmall) {
+    // Small groups (Chan's first rounds make many): the same key-then-exact sort, by
+    // insertion in local arrays.
+    std::array<Vec2, kSmall> sorted;
+    std::array<Real, kSmall> keys;
+    std::size_t count = 0;
+    bool reliable = true;
+    for (const Vec2& p : points) {
+      if (p == pivot) continue;
+      const Real key = pseudo_angle(pivot, p);
+      reliable &= std::isfinite(key) && p.x() - pivot.x() < 0x1p+1000 &&
+                  std::abs(p.y() - pivot.y()) < 0x1p+1000;
+      std::size_t j = count++;
+      for (; j > 0 && keys[j - 1] > key; --j) {
+        keys[j] = keys[j - 1];
+        sorted[j] = sorted[j - 1];
+      }
+      keys[j] = key;
+      sorted[j] = p;
+    }
+    for (std::size_t i = 1; i < count; ++i) {
+      if (!reliable || keys_indistinct(keys[i - 1], keys[i])) {
+        // Exact insertion step; a no-op where the keys already had the order right.
+        const Vec2 p = sorted[i];
+        std::size_t j = i;
+        for (; j > 0 && precedes(p, sorted[j - 1]); --j) sorted[j] = sorted[j - 1];
+        sorted[j] = p;
+      }
+    }
+    std::array<Vec2, kSmall + 1> stack;
+    std::size_t top = 0;
+    stack[top++] = pivot;
+    for (std::size_t i = 0; i < count; ++i) {
+      while (top >= 2 && orient2d(stack[top - 2], stack[top - 1], sorted[i]) <= 0) --top;
+      stack[top++] = sorted[i];
+    }
+    ring.insert(ring.end(), stack.begin(), stack.begin() + static_cast<std::ptrdiff_t>(top));
+    return;
+  }
+
+  std::vector<Vec2>& others = scratch.sorted;
+  if (points.size() > std::numeric_limits<std::uint32_t>::max() ||
+      !sort_by_pseudo_angle(pivot, points, scratch, precedes)) {
+    others.clear();
+    for (const Vec2& p : points) {
+      if (p != pivot) others.push_back(p);
+    }
+    std::sort(others.begin(), others.end(), precedes);
+  }
 
   const std::size_t base = ring.size();
+  ring.reserve(base + others.size() + 1);  // untouched capacity costs no page faults
   ring.push_back(pivot);
-  for (const Vec2& p : scratch) {
+  for (const Vec2& p : others) {
     // Pop right turns and straight continuations: the hull keeps only strict left turns.
     while (ring.size() - base >= 2 && orient2d(ring[ring.size() - 2], ring.back(), p) <= 0) {
       ring.pop_back();
@@ -42,9 +178,8 @@ void graham_scan(std::span<const Vec2> points, std::vector<Vec2>& scratch,
 
 ConvexHull graham_hull(std::span<const Vec2> points) {
   validate_hull_input(points);
-  std::vector<Vec2> scratch;
+  detail::GrahamScratch scratch;
   std::vector<Vec2> ring;
-  scratch.reserve(points.size());
   detail::graham_scan(points, scratch, ring);
   return detail::hull_from_ccw_ring(std::move(ring));
 }

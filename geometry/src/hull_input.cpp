@@ -7,12 +7,16 @@
 
 namespace mink {
 
-void validate_hull_input(std::span<const Vec2> points) {
+void require_finite(std::span<const Vec2> points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!std::isfinite(points[i].x()) || !std::isfinite(points[i].y())) {
       throw NonFiniteInputError(i);
     }
   }
+}
+
+void validate_hull_input(std::span<const Vec2> points) {
+  require_finite(points);
   if (points.size() < 3) {
     throw DegenerateInputError("a hull needs at least 3 points, got " +
                                std::to_string(points.size()));
@@ -27,8 +31,7 @@ void validate_hull_input(std::span<const Vec2> points) {
   for (std::size_t i = other + 1; i < points.size(); ++i) {
     if (orient2d(first, points[other], points[i]) != 0) return;
   }
-  throw DegenerateInputError("all " + std::to_string(points.size()) +
-                             " points lie on one line");
+  throw DegenerateInputError("all " + std::to_string(points.size()) + " points lie on one line");
 }
 
 }  // namespace mink

@@ -65,8 +65,7 @@ std::vector<Vec2> melkman_sorted_unchecked(std::span<const Vec2> sorted_points) 
 std::vector<Vec2> melkman_sorted_chain_hull(std::span<const Vec2> sorted_points) {
   for (std::size_t i = 1; i < sorted_points.size(); ++i) {
     if (lex_less(sorted_points[i], sorted_points[i - 1])) {
-      throw InvalidArgumentError("melkman: point " + std::to_string(i) +
-                                 " is out of (x, y) order");
+      throw InvalidArgumentError("melkman: point " + std::to_string(i) + " is out of (x, y) order");
     }
   }
   std::vector<Vec2> ring = detail::melkman_sorted_unchecked(sorted_points);

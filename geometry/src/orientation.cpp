@@ -39,9 +39,8 @@ void trim(BigInt& x) {
 BigInt shifted(const ScaledDouble& value, int shift) {
   BigInt result;
   if (value.mantissa == 0) return result;
-  const std::uint64_t magnitude =
-      value.mantissa < 0 ? static_cast<std::uint64_t>(-value.mantissa)
-                         : static_cast<std::uint64_t>(value.mantissa);
+  const std::uint64_t magnitude = value.mantissa < 0 ? static_cast<std::uint64_t>(-value.mantissa)
+                                                     : static_cast<std::uint64_t>(value.mantissa);
   const int word = shift / kLimbBits;
   const int bit = shift % kLimbBits;
   // The 53-bit magnitude shifted by up to 31 bits spans at most three limbs.
@@ -140,9 +139,8 @@ int compare(const BigInt& x, const BigInt& y) {
 }  // namespace
 
 int orient2d_exact(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
-  const std::array<ScaledDouble, 6> parts = {decompose(a.x()), decompose(a.y()),
-                                             decompose(b.x()), decompose(b.y()),
-                                             decompose(c.x()), decompose(c.y())};
+  const std::array<ScaledDouble, 6> parts = {decompose(a.x()), decompose(a.y()), decompose(b.x()),
+                                             decompose(b.y()), decompose(c.x()), decompose(c.y())};
   int lowest_exponent = 0;
   bool any_nonzero = false;
   for (const ScaledDouble& part : parts) {

@@ -35,7 +35,7 @@ class Random {
     return result;
   }
   Real unit() { return static_cast<Real>(next() >> 11) * 0x1p-53; }  // [0, 1)
-  Real symmetric() { return 2 * unit() - 1; }                      // [-1, 1)
+  Real symmetric() { return 2 * unit() - 1; }                        // [-1, 1)
   Real normal() {  // Box-Muller; 1 - unit() is in (0, 1], so the log is finite
     const Real radius = std::sqrt(-2 * std::log(1 - unit()));
     return radius * std::cos(2 * std::numbers::pi * unit());
@@ -54,12 +54,15 @@ Vec2 in_unit_disk(Random& random) {
   }
 }
 
-constexpr std::array<PointDistribution, 9> kDistributions = {
-    PointDistribution::uniform_disk,   PointDistribution::uniform_square,
-    PointDistribution::gaussian,       PointDistribution::on_circle,
-    PointDistribution::lattice,        PointDistribution::clusters,
-    PointDistribution::near_collinear, PointDistribution::far_from_origin,
-    PointDistribution::tiny};
+constexpr std::array<PointDistribution, 9> kDistributions = {PointDistribution::uniform_disk,
+                                                             PointDistribution::uniform_square,
+                                                             PointDistribution::gaussian,
+                                                             PointDistribution::on_circle,
+                                                             PointDistribution::lattice,
+                                                             PointDistribution::clusters,
+                                                             PointDistribution::near_collinear,
+                                                             PointDistribution::far_from_origin,
+                                                             PointDistribution::tiny};
 
 }  // namespace
 
@@ -87,7 +90,9 @@ std::string_view to_string(PointDistribution distribution) noexcept {
   return "unknown";
 }
 
-std::span<const PointDistribution> all_point_distributions() noexcept { return kDistributions; }
+std::span<const PointDistribution> all_point_distributions() noexcept {
+  return kDistributions;
+}
 
 std::vector<Vec2> generate_points(PointDistribution distribution, std::size_t count,
                                   std::uint64_t seed) {
@@ -161,8 +166,10 @@ std::pair<std::vector<Vec2>, std::vector<Vec2>> paper_point_sets(std::uint64_t s
   Random random(seed);
   std::vector<Vec2> first;
   std::vector<Vec2> second;
-  for (std::size_t i = 0; i < count; ++i) first.emplace_back(400 * random.unit(), 400 * random.unit());
-  for (std::size_t i = 0; i < count; ++i) second.emplace_back(400 * random.unit(), 400 * random.unit());
+  for (std::size_t i = 0; i < count; ++i)
+    first.emplace_back(400 * random.unit(), 400 * random.unit());
+  for (std::size_t i = 0; i < count; ++i)
+    second.emplace_back(400 * random.unit(), 400 * random.unit());
   return {std::move(first), std::move(second)};
 }
 

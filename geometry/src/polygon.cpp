@@ -50,6 +50,8 @@ AreaProperties area_properties(std::span<const Vec2> polygon) {
   return properties;
 }
 
-Vec2 centroid(std::span<const Vec2> polygon) { return area_properties(polygon).centroid; }
+Vec2 centroid(std::span<const Vec2> polygon) {
+  return area_properties(polygon).centroid;
+}
 
 }  // namespace mink

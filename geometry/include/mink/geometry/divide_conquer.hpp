@@ -21,8 +21,7 @@ ConvexHull divide_conquer_hull(std::span<const Vec2> points, DivideConquerOption
 namespace detail {
 // Hull of two CCW rings whose points are separated in (x, y) order: every point of `left`
 // precedes every point of `right`. Either ring may be degenerate (1 or 2 vertices).
-std::vector<Vec2> merge_by_common_tangents(std::span<const Vec2> left,
-                                           std::span<const Vec2> right);
+std::vector<Vec2> merge_by_common_tangents(std::span<const Vec2> left, std::span<const Vec2> right);
 // Sorts by (x, y): a radix sort on x with ties settled by y.
 void sort_lexicographic(std::vector<Vec2>& points);
 }  // namespace detail

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -12,10 +13,17 @@ namespace mink {
 ConvexHull graham_hull(std::span<const Vec2> points);
 
 namespace detail {
+// Storage the scan reuses from call to call (Chan runs it once per group).
+struct GrahamScratch {
+  std::vector<Vec2> sorted;
+  std::vector<Real> keys;
+  std::vector<std::uint64_t> order;
+  std::vector<std::uint64_t> buffer;
+};
+
 // The scan on any finite input, degenerate too: appends the CCW ring (1, 2 or more vertices,
-// starting at the lowest-x then lowest-y point) to `ring`. `scratch` is reused storage.
-void graham_scan(std::span<const Vec2> points, std::vector<Vec2>& scratch,
-                 std::vector<Vec2>& ring);
+// starting at the lowest-x then lowest-y point) to `ring`.
+void graham_scan(std::span<const Vec2> points, GrahamScratch& scratch, std::vector<Vec2>& ring);
 }  // namespace detail
 
 }  // namespace mink

@@ -15,15 +15,15 @@ namespace mink {
 // generator and the conversions to doubles are Minkowski's own, not the standard library's
 // implementation-defined distributions). Used by tests, benchmarks and demos.
 enum class PointDistribution {
-  uniform_disk,    // unit disk
-  uniform_square,  // [-1, 1]^2
-  gaussian,        // standard normal in x and y
-  on_circle,       // unit circle, random angles: nearly every point is a hull vertex
-  lattice,         // integer grid, many collinear points and duplicates
-  clusters,        // a few tight Gaussian clusters
-  near_collinear,  // along a line, perturbed by a few units in the last place
-  far_from_origin, // uniform disk of radius 1 centred at (1e9, -3e9)
-  tiny,            // uniform disk of radius 1e-300 (subnormal differences)
+  uniform_disk,     // unit disk
+  uniform_square,   // [-1, 1]^2
+  gaussian,         // standard normal in x and y
+  on_circle,        // unit circle, random angles: nearly every point is a hull vertex
+  lattice,          // integer grid, many collinear points and duplicates
+  clusters,         // a few tight Gaussian clusters
+  near_collinear,   // along a line, perturbed by a few units in the last place
+  far_from_origin,  // uniform disk of radius 1 centred at (1e9, -3e9)
+  tiny,             // uniform disk of radius 1e-300 (subnormal differences)
 };
 
 std::string_view to_string(PointDistribution distribution) noexcept;

@@ -9,9 +9,9 @@ namespace mink {
 // Mass properties of a simple polygon of unit density, vertices in order (CCW gives a
 // positive area). Computed about the first vertex, so far-from-origin polygons keep precision.
 struct AreaProperties {
-  Real area = 0;              // signed: positive for counter-clockwise vertices
-  Vec2 centroid{0, 0};        // paper eq. 3
-  Real polar_moment = 0;      // second moment of area about the centroid, integral of |r|^2 dA
+  Real area = 0;          // signed: positive for counter-clockwise vertices
+  Vec2 centroid{0, 0};    // paper eq. 3
+  Real polar_moment = 0;  // second moment of area about the centroid, integral of |r|^2 dA
 };
 
 // Shoelace area, positive for counter-clockwise order.
