@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "mink/error.hpp"
 #include "mink/geometry/hull_input.hpp"
@@ -94,7 +95,9 @@ QuickInside quick_inside(std::span<const Vec2> polygon) {
 
 }  // namespace
 
-std::vector<Vec2> akl_toussaint_filter(std::span<const Vec2> points) {
+namespace {
+
+std::optional<std::vector<Vec2>> filter(std::span<const Vec2> points, bool only_if_worthwhile) {
   if (points.size() < 3) validate_hull_input(points);  // throws with the usual message
   // Extremes in sixteen directions, found in the same pass that checks every coordinate is
   // finite. Floating-point scores only choose which input points span the polygon; the
@@ -135,6 +138,7 @@ std::vector<Vec2> akl_toussaint_filter(std::span<const Vec2> points) {
     polygon.assign(inner.vertices().begin(), inner.vertices().end());
   } catch (const DegenerateInputError&) {
     validate_hull_input(points);  // throws if the whole set is degenerate too
+    if (only_if_worthwhile) return std::nullopt;
     return std::vector<Vec2>(points.begin(), points.end());
   }
 
@@ -164,19 +168,42 @@ std::vector<Vec2> akl_toussaint_filter(std::span<const Vec2> points) {
          kRelativeMargin * (std::abs(dx) * height + std::abs(dy) * width) + kAbsoluteMargin});
   }
   const QuickInside quick = quick_inside(polygon);
-
-  std::vector<Vec2> survivors;
-  survivors.reserve(points.size() / 8);
-  for (const Vec2& p : points) {
-    if (quick.contains(p)) continue;
+  const auto certainly_inside = [&](const Vec2& p) {
+    if (quick.contains(p)) return true;
     bool inside = p.x() >= min_x && p.x() <= max_x && p.y() >= min_y && p.y() <= max_y;
     for (const EdgeTest& e : edges) {
       const Real cross = e.dx * (p.y() - e.origin_y) - e.dy * (p.x() - e.origin_x);
       inside &= cross > e.margin;
     }
-    if (!inside) survivors.push_back(p);
+    return inside;
+  };
+  if (only_if_worthwhile) {
+    // A sample of the points says whether the second pass would drop enough of them to pay
+    // for itself (points on a circle, say, all survive).
+    constexpr std::size_t kSample = 64;
+    std::size_t dropped = 0;
+    for (std::size_t k = 0; k < kSample; ++k) {
+      dropped += certainly_inside(points[k * points.size() / kSample]) ? 1 : 0;
+    }
+    if (dropped < kSample / 2) return std::nullopt;
+  }
+
+  std::vector<Vec2> survivors;
+  survivors.reserve(points.size() / 8);
+  for (const Vec2& p : points) {
+    if (!certainly_inside(p)) survivors.push_back(p);
   }
   return survivors;
+}
+
+}  // namespace
+
+std::vector<Vec2> akl_toussaint_filter(std::span<const Vec2> points) {
+  return *filter(points, false);
+}
+
+std::optional<std::vector<Vec2>> akl_toussaint_filter_if_worthwhile(std::span<const Vec2> points) {
+  return filter(points, true);
 }
 
 }  // namespace mink

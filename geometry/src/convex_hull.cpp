@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "mink/error.hpp"
@@ -98,10 +99,10 @@ std::span<const HullAlgorithm> all_hull_algorithms() noexcept {
 }
 
 ConvexHull build_hull(std::span<const Vec2> points, HullAlgorithm algorithm, HullOptions options) {
-  std::vector<Vec2> survivors;
+  std::optional<std::vector<Vec2>> survivors;
   if (options.prefilter) {
-    survivors = akl_toussaint_filter(points);  // validates, keeps every hull vertex
-    points = survivors;
+    survivors = akl_toussaint_filter_if_worthwhile(points);  // keeps every hull vertex
+    if (survivors) points = *survivors;
   }
   switch (algorithm) {
     case HullAlgorithm::chan:
