@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <tuple>
 #include <utility>
 
 #include "mink/geometry/hull_input.hpp"
@@ -73,18 +74,21 @@ bool sort_by_pseudo_angle(const Vec2& pivot, std::span<const Vec2> points, Graha
     sorted[j] = points[order[j] & 0xffffffffULL];
     keys[j] = pseudo_angle(pivot, sorted[j]);
   }
-  // Items that share their high 32 key bits came out in input order: order them by the key.
-  for (std::size_t j = 1; j < n; ++j) {
-    if ((order[j] >> 32) != (order[j - 1] >> 32) || keys[j - 1] <= keys[j]) continue;
-    const Real key = keys[j];
-    const Vec2 point = sorted[j];
-    std::size_t k = j;
-    for (; k > 0 && keys[k - 1] > key; --k) {
-      keys[k] = keys[k - 1];
-      sorted[k] = sorted[k - 1];
+  // Items that share their high 32 key bits came out in input order: order each such run by
+  // the full key. A sort, not insertion: near-collinear input makes one run of every point.
+  for (std::size_t begin = 0; begin < n;) {
+    std::size_t end = begin + 1;
+    while (end < n && (order[end] >> 32) == (order[begin] >> 32)) ++end;
+    if (end - begin > 1 && !std::is_sorted(keys.begin() + static_cast<std::ptrdiff_t>(begin),
+                                           keys.begin() + static_cast<std::ptrdiff_t>(end))) {
+      std::vector<std::pair<Real, Vec2>>& run = scratch.keyed_run;
+      run.clear();
+      for (std::size_t j = begin; j < end; ++j) run.emplace_back(keys[j], sorted[j]);
+      std::sort(run.begin(), run.end(),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (std::size_t j = begin; j < end; ++j) std::tie(keys[j], sorted[j]) = run[j - begin];
     }
-    keys[k] = key;
-    sorted[k] = point;
+    begin = end;
   }
   for (std::size_t begin = 0; begin < n;) {
     std::size_t end = begin + 1;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 namespace mink::detail {
@@ -136,9 +137,99 @@ int compare(const BigInt& x, const BigInt& y) {
   return x.negative ? -order : order;
 }
 
+// Exact floating-point expansions (Shewchuk): a value held as a sum of doubles whose
+// magnitudes do not overlap. Two-sum and two-product (through fma) make every step exact as long
+// as no product underflows or overflows, which expansion_sign's range check ensures.
+struct TwoTerm {
+  Real high;
+  Real low;  // exact error: high + low is the exact result
+};
+
+TwoTerm two_sum(Real x, Real y) {
+  const Real sum = x + y;
+  const Real y_part = sum - x;
+  return {sum, (x - (sum - y_part)) + (y - y_part)};
+}
+
+TwoTerm two_product(Real x, Real y) {
+  const Real product = x * y;
+  return {product, std::fma(x, y, -product)};
+}
+
+// Up to 16 components: each of the two products of two-term differences has 8 terms.
+struct Expansion {
+  std::array<Real, 16> terms{};
+  int size = 0;
+
+  // Adds `value` exactly, keeping the components non-overlapping in increasing magnitude.
+  void add(Real value) {
+    int kept = 0;
+    for (int i = 0; i < size; ++i) {
+      const TwoTerm step = two_sum(value, terms[i]);
+      value = step.high;
+      if (step.low != 0) terms[kept++] = step.low;
+    }
+    terms[kept++] = value;
+    size = kept;
+  }
+  // The largest component decides the sign of a non-overlapping expansion.
+  int sign() const {
+    for (int i = size - 1; i >= 0; --i) {
+      if (terms[i] != 0) return terms[i] > 0 ? 1 : -1;
+    }
+    return 0;
+  }
+};
+
+// A product of non-zero factors must stay where fma's error term is exact (no underflow) and
+// nothing overflows.
+bool in_expansion_range(Real product) {
+  constexpr Real kSmallest = 0x1p-900;
+  constexpr Real kLargest = 0x1p+1000;
+  const Real magnitude = std::abs(product);
+  return magnitude >= kSmallest && magnitude <= kLargest;
+}
+
+// det = (ax - cx)(by - cy) - (ay - cy)(bx - cx) with each difference split exactly into two
+// terms and each product of two-term factors expanded into four exact two-products.
+// Returns false when a magnitude leaves the range where that is exact.
+bool orient2d_expansion(const Vec2& a, const Vec2& b, const Vec2& c, int& sign) {
+  const TwoTerm acx = two_sum(a.x(), -c.x());
+  const TwoTerm bcy = two_sum(b.y(), -c.y());
+  const TwoTerm acy = two_sum(a.y(), -c.y());
+  const TwoTerm bcx = two_sum(b.x(), -c.x());
+  Expansion det;
+  bool in_range = true;
+  const auto add_product = [&](Real x, Real y, Real sign_of_term) {
+    if (x == 0 || y == 0) return;  // most differences are exact: their low terms are zero
+    const TwoTerm product = two_product(x, y);
+    in_range &= in_expansion_range(product.high);
+    det.add(sign_of_term * product.low);
+    det.add(sign_of_term * product.high);
+  };
+  for (Real x : {acx.low, acx.high}) {
+    for (Real y : {bcy.low, bcy.high}) add_product(x, y, 1);
+  }
+  for (Real x : {acy.low, acy.high}) {
+    for (Real y : {bcx.low, bcx.high}) add_product(x, y, -1);
+  }
+  if (!in_range || !std::isfinite(acx.high) || !std::isfinite(bcy.high) ||
+      !std::isfinite(acy.high) || !std::isfinite(bcx.high)) {
+    return false;
+  }
+  sign = det.sign();
+  return true;
+}
+
 }  // namespace
 
 int orient2d_exact(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
+  int sign = 0;
+  if (orient2d_expansion(a, b, c, sign)) return sign;
+  return orient2d_big_integer(a, b, c);
+}
+
+int orient2d_big_integer(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
   const std::array<ScaledDouble, 6> parts = {decompose(a.x()), decompose(a.y()), decompose(b.x()),
                                              decompose(b.y()), decompose(c.x()), decompose(c.y())};
   int lowest_exponent = 0;

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "mink/geometry/convex_hull.hpp"
@@ -19,6 +20,7 @@ struct GrahamScratch {
   std::vector<Real> keys;
   std::vector<std::uint64_t> order;
   std::vector<std::uint64_t> buffer;
+  std::vector<std::pair<Real, Vec2>> keyed_run;
 };
 
 // The scan on any finite input, degenerate too: appends the CCW ring (1, 2 or more vertices,

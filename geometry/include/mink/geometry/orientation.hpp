@@ -7,8 +7,11 @@
 namespace mink {
 
 namespace detail {
-// Exact sign of det[b - a, c - a] for any finite doubles, by big-integer arithmetic.
+// Exact sign of det[b - a, c - a] for any finite doubles: floating-point expansions when no
+// product underflows or overflows, big-integer arithmetic otherwise.
 int orient2d_exact(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
+// The same sign by big-integer arithmetic alone: slow, obviously exact, the test oracle.
+int orient2d_big_integer(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
 }  // namespace detail
 
 // Sign of the turn a -> b -> c: +1 when c lies strictly left of the directed line a->b
