@@ -1,0 +1,56 @@
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "mink/broadphase/aabb.hpp"
+
+namespace mink {
+
+// Stays valid from create_proxy until destroy_proxy, whatever happens to other proxies.
+using ProxyId = std::uint32_t;
+inline constexpr ProxyId null_proxy = std::numeric_limits<ProxyId>::max();
+
+// Static proxies never pair with each other.
+enum class ProxyKind : std::uint8_t { static_body, moving };
+
+// A candidate pair, always with a < b.
+struct ProxyPair {
+  ProxyId a = null_proxy;
+  ProxyId b = null_proxy;
+  bool operator==(const ProxyPair&) const = default;
+};
+
+// What changed in the pair set since the previous update_pairs().
+struct PairEvents {
+  std::vector<ProxyPair> begun;
+  std::vector<ProxyPair> ended;
+};
+
+// The interface both the sweep-and-prune and its brute-force oracle implement. Boxes are
+// stored fattened by a margin; move_proxy only changes the stored box when the tight box
+// leaves it, so slow bodies keep their pairs.
+class Broadphase {
+ public:
+  virtual ~Broadphase() = default;
+
+  virtual ProxyId create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data) = 0;
+  virtual void destroy_proxy(ProxyId id) = 0;
+  // Returns true when the stored (fat) box changed.
+  virtual bool move_proxy(ProxyId id, const Aabb& tight) = 0;
+  // Brings the pair set up to date: every pair of overlapping fat boxes, except static-static.
+  virtual void update_pairs(PairEvents& events) = 0;
+
+  // The current pair set, in no particular order.
+  virtual const std::vector<ProxyPair>& pairs() const = 0;
+  virtual const Aabb& fat_aabb(ProxyId id) const = 0;
+  virtual std::uint64_t user_data(ProxyId id) const = 0;
+  virtual std::size_t proxy_count() const = 0;
+
+  // Appends every proxy whose fat box overlaps `box` / contains `point`.
+  virtual void query(const Aabb& box, std::vector<ProxyId>& out) const = 0;
+  virtual void query_point(const Vec2& point, std::vector<ProxyId>& out) const = 0;
+};
+
+}  // namespace mink
