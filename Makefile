@@ -36,7 +36,7 @@ sanitize-test: deps-test
 
 bench: deps-bench
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DMINK_BUILD_BENCH=ON $(CMAKE_FLAGS)
-	cmake --build $(BUILD_DIR) -j $(JOBS) --target mink_bench_hull
+	cmake --build $(BUILD_DIR) -j $(JOBS)
 	bench/run.sh $(BUILD_DIR)
 
 format:

@@ -1,55 +1,35 @@
 #!/usr/bin/env bash
-# Runs the hull benchmark and plots it: bench/results/hull.csv and bench/results/hull.png.
+# Runs every benchmark suite (bench/run_<suite>.sh), each writing bench/results/<suite>.csv.
 #
-# Usage: bench/run.sh BUILD_DIR [Google Benchmark flags...]
+# Usage: bench/run.sh BUILD_DIR
 # Environment:
-#   MINK_BENCH_MAX_SIZE=N                largest n (default 10^7); 100000 makes a quick run
-#   MINK_BENCH_IMPLEMENTATIONS=a,b,...   only these implementations, e.g. chan,divide-conquer,cgal
+#   MINK_BENCH_SUITES="hull gjk ..."   only these suites (default: all of them)
+# Each suite's script documents its own environment variables.
 set -euo pipefail
 
-if [ $# -lt 1 ]; then
-  echo "usage: $0 BUILD_DIR [benchmark flags...]" >&2
+if [ $# -ne 1 ]; then
+  echo "usage: $0 BUILD_DIR" >&2
   exit 2
 fi
 build_dir=$1
-shift
 bench_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-binary=$build_dir/bin/mink_bench_hull
-results_dir=$bench_dir/results
-csv=$results_dir/hull.csv
-png=$results_dir/hull.png
 
-if [ ! -x "$binary" ]; then
-  echo "run.sh: $binary not found; build the target mink_bench_hull first" >&2
-  exit 1
-fi
-command -v gnuplot >/dev/null || { echo "run.sh: gnuplot not found (apt install gnuplot-nox)" >&2; exit 1; }
-mkdir -p "$results_dir"
-
-args=(--csv="$csv")
-if [ -n "${MINK_BENCH_MAX_SIZE:-}" ]; then args+=(--max-size="$MINK_BENCH_MAX_SIZE"); fi
-if [ -n "${MINK_BENCH_IMPLEMENTATIONS:-}" ]; then
-  args+=(--implementations="$MINK_BENCH_IMPLEMENTATIONS")
+suites=${MINK_BENCH_SUITES:-}
+if [ -z "$suites" ]; then
+  for script in "$bench_dir"/run_*.sh; do
+    name=$(basename "$script" .sh)
+    suites+="${name#run_} "
+  done
 fi
 
-started=$SECONDS
 status=0
-"$binary" "${args[@]}" "$@" || status=$?
-echo "Hull benchmark took $((SECONDS - started)) s"
-# Status 3: something was not measured or a hull was wrong (listed above); plot the rest anyway.
-if [ "$status" -ne 0 ] && [ "$status" -ne 3 ]; then exit "$status"; fi
-
-# Cases and implementations in the order they appear in the CSV.
-cases=$(awk -F, 'NR > 1 && !seen[$1]++ { printf "%s ", $1 }' "$csv")
-implementations=$(awk -F, 'NR > 1 && !seen[$3]++ { printf "%s ", $3 }' "$csv")
-if [ -z "$cases" ]; then
-  echo "run.sh: $csv has no results to plot" >&2
-  exit 1
-fi
-# pngcairo draws smoother lines; the plain png terminal is the fallback.
-terminal=png
-if gnuplot -e 'set terminal pngcairo' >/dev/null 2>&1; then terminal=pngcairo; fi
-gnuplot -e "csv='$csv'; png='$png'; terminal='$terminal'; cases='$cases'; implementations='$implementations'" \
-  "$bench_dir/plot_hull.gp"
-echo "Wrote $png"
+for suite in $suites; do
+  script=$bench_dir/run_$suite.sh
+  if [ ! -x "$script" ]; then
+    echo "run.sh: no benchmark suite '$suite' ($script)" >&2
+    exit 2
+  fi
+  echo "== benchmark suite: $suite"
+  "$script" "$build_dir" || status=$?
+done
 exit "$status"

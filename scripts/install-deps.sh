@@ -4,8 +4,8 @@
 set -euo pipefail
 
 profile=${1:-build}
-build_pkgs=(build-essential cmake pkg-config libeigen3-dev libcli11-dev nlohmann-json3-dev libpng-dev)
-test_pkgs=(libgtest-dev libgmock-dev libcgal-dev libgmp-dev libmpfr-dev)
+build_pkgs=(build-essential cmake pkg-config libeigen3-dev libcli11-dev nlohmann-json3-dev libpng-dev libbox2d-dev)
+test_pkgs=(libgtest-dev libgmock-dev libcgal-dev libgmp-dev libmpfr-dev libbox2d-dev)
 bench_pkgs=(libbenchmark-dev libcgal-dev libgmp-dev libmpfr-dev libqhull-dev gnuplot-nox)
 
 case "$profile" in
