@@ -33,7 +33,7 @@ int run(int argc, const char* const* argv, Streams streams) {
     try {
       return actions.at(command->get_name())();
     } catch (const std::exception& error) {
-      return report_error(error);
+      return report_error(error, streams.err);
     }
   }
   return kBadInput;
