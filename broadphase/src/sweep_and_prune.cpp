@@ -112,6 +112,10 @@ bool SweepAndPrune::is_oversized(const Entry& entry) const {
   return entry.hi0 - entry.lo0 > cap0_ || entry.hi1 - entry.lo1 > cap1_;
 }
 
+bool SweepAndPrune::overlap(const Entry& x, const Entry& y) {
+  return x.lo0 <= y.hi0 && y.lo0 <= x.hi0 && x.lo1 <= y.hi1 && y.lo1 <= x.hi1;
+}
+
 template <typename Visit>
 void SweepAndPrune::sweep(const Entry& q, Visit&& visit) const {
   if (!entries_.empty()) {
@@ -123,29 +127,41 @@ void SweepAndPrune::sweep(const Entry& q, Visit&& visit) const {
     const std::uint32_t low = sweep_key(below(q.lo0 - reach0));
     const std::uint32_t high = sweep_key(q.hi0);
     const auto by_key = [](const Entry& e, std::uint64_t key) { return e.key < key; };
-    auto it = entries_.begin();
-    const auto end = entries_.end();
+    const Entry* const entries = entries_.data();
     for (std::uint32_t band = first_band; band <= last_band; ++band) {
-      it = std::lower_bound(it, end, make_key(band, low), by_key);
-      if (it == end) break;
-      // Skips empty bands in one step.
-      const auto found_band = static_cast<std::uint32_t>(it->key >> 32);
-      if (found_band > band) {
-        if (found_band > last_band) break;
-        band = found_band;
-        it = std::lower_bound(it, end, make_key(band, low), by_key);
-      }
+      const Entry* const band_end = entries + band_begin_[band + 1];
+      const Entry* it =
+          std::lower_bound(entries + band_begin_[band], band_end, make_key(band, low), by_key);
       const std::uint64_t stop = make_key(band, high);
-      for (; it != end && it->key <= stop; ++it) {
-        if (it->lo0 <= q.hi0 && q.lo0 <= it->hi0 && it->lo1 <= q.hi1 && q.lo1 <= it->hi1) {
-          visit(*it);
-        }
+      for (; it != band_end && it->key <= stop; ++it) {
+        if (overlap(*it, q)) visit(*it);
       }
     }
   }
   for (const Entry& e : oversized_) {
-    if (e.lo0 <= q.hi0 && q.lo0 <= e.hi0 && e.lo1 <= q.hi1 && q.lo1 <= e.hi1) visit(e);
+    if (overlap(e, q)) visit(e);
   }
+}
+
+void SweepAndPrune::find_band_starts() {
+  band_begin_.resize(std::size_t{band_count_} + 1);
+  const std::size_t n = entries_.size();
+  if (std::size_t{band_count_} * 16 > n) {
+    // Many bands for few entries: one pass.
+    std::size_t i = 0;
+    for (std::uint32_t band = 0; band < band_count_; ++band) {
+      while (i < n && (entries_[i].key >> 32) < band) ++i;
+      band_begin_[band] = static_cast<std::uint32_t>(i);
+    }
+  } else {
+    for (std::uint32_t band = 0; band < band_count_; ++band) {
+      band_begin_[band] = static_cast<std::uint32_t>(
+          std::lower_bound(entries_.begin(), entries_.end(), make_key(band, 0),
+                           [](const Entry& e, std::uint64_t key) { return e.key < key; }) -
+          entries_.begin());
+    }
+  }
+  band_begin_[band_count_] = static_cast<std::uint32_t>(n);
 }
 
 void SweepAndPrune::update_pairs(PairEvents& events) {
@@ -198,13 +214,16 @@ void SweepAndPrune::find_begun(PairEvents& events) {
     const Entry& q =
         (slot & kOversizedBit) != 0 ? oversized_[slot & ~kOversizedBit] : entries_[slot];
     const bool m_new = (touch_m & kCreated) != 0;
+    const Entry before = m_new ? q : make_entry(null_proxy, committed_[m]);
     sweep(q, [&](const Entry& e) {
       const ProxyId o = e.id;
       if (o == m || (q.is_static != 0 && e.is_static != 0)) return;
       const std::uint8_t touch_o = touched_[o];
       if (touch_o != 0 && o < m) return;
-      const bool existed =
-          !m_new && (touch_o & kCreated) == 0 && committed_[m].overlaps(committed_[o]);
+      // An untouched partner's box in the array is also its previous box.
+      const bool existed = !m_new && (touch_o != 0 ? (touch_o & kCreated) == 0 &&
+                                                         committed_[m].overlaps(committed_[o])
+                                                   : overlap(before, e));
       if (!existed) {
         const ProxyPair pair = ordered(m, o);
         pairs_.insert(pair);
@@ -329,7 +348,10 @@ void SweepAndPrune::sort_changed() {
       follow = was_listed || shifted ? i + 1 : kNone;
       if (shifts > budget) break;
     }
-    if (shifts <= budget) return;
+    if (shifts <= budget) {
+      find_band_starts();
+      return;
+    }
   } else {
     std::size_t kept = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -359,6 +381,7 @@ void SweepAndPrune::sort_changed() {
 }
 
 void SweepAndPrune::recompute_slots() {
+  find_band_starts();
   for (std::size_t i = 0; i < entries_.size(); ++i) {
     slot_[entries_[i].id] = static_cast<std::uint32_t>(i);
   }

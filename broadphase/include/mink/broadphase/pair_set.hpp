@@ -35,8 +35,12 @@ class PairSet {
   std::size_t find(std::uint64_t key) const;
   void grow();
 
-  std::vector<std::uint64_t> keys_;
-  std::vector<std::uint32_t> index_;  // position of the slot's pair in pairs_
+  // Key and position in pairs_ side by side: one cache line per probe.
+  struct Slot {
+    std::uint64_t key;
+    std::uint32_t index;
+  };
+  std::vector<Slot> slots_;
   std::vector<ProxyPair> pairs_;
   std::size_t mask_ = 0;
   int shift_ = 0;

@@ -63,6 +63,7 @@ class SweepAndPrune final : public Broadphase {
   bool is_oversized(const Entry& entry) const;
   std::uint32_t band_of(Real band_coordinate) const;
 
+  static bool overlap(const Entry& x, const Entry& y);
   // Calls visit(entry) for every stored entry overlapping `entry`'s box.
   template <typename Visit>
   void sweep(const Entry& entry, Visit&& visit) const;
@@ -78,13 +79,16 @@ class SweepAndPrune final : public Broadphase {
   bool sink(std::size_t i, std::size_t& shifts);
   void sort_changed();
   void rebuild();
+  // Also refreshes band_begin_, which every change of entries_ invalidates.
   void recompute_slots();
+  void find_band_starts();
 
   ProxyStore store_;
   PairSet pairs_;
 
-  std::vector<Entry> entries_;         // sorted by key; boxes as of the last update
-  std::vector<Entry> oversized_;       // unsorted; boxes as of the last update
+  std::vector<Entry> entries_;             // sorted by key; boxes as of the last update
+  std::vector<std::uint32_t> band_begin_;  // per band: its first index in entries_, then n
+  std::vector<Entry> oversized_;           // unsorted; boxes as of the last update
   std::vector<std::uint32_t> slot_;    // per id: index in entries_, or in oversized_ with the bit
   std::vector<Aabb> committed_;        // per id: fat box as of the last update
   std::vector<std::uint8_t> touched_;  // per id: Touch bits
