@@ -26,11 +26,12 @@ constexpr std::size_t kSampleSize = 1025;
 std::uint32_t sweep_key(Real x) {
   constexpr Real kFloatMax = std::numeric_limits<float>::max();
   const Real clamped = std::clamp(x, -kFloatMax, kFloatMax);
-  float f = static_cast<float>(clamped);
-  if (static_cast<Real>(f) > clamped) f = std::nextafter(f, -std::numeric_limits<float>::max());
-  f += 0.0f;  // -0 and +0 must map to one key
+  const float f = static_cast<float>(clamped) + 0.0f;  // -0 and +0 must map to one key
   const auto bits = std::bit_cast<std::uint32_t>(f);
-  return (bits & 0x80000000u) != 0 ? ~bits : (bits | 0x80000000u);
+  const std::uint32_t key = (bits & 0x80000000u) != 0 ? ~bits : (bits | 0x80000000u);
+  // Consecutive floats have consecutive keys, so one less is the float below. f is above
+  // -FLT_MAX when it rounded up, so this cannot wrap.
+  return static_cast<Real>(f) > clamped ? key - 1 : key;
 }
 
 std::uint64_t make_key(std::uint32_t band, std::uint32_t low) {
