@@ -32,12 +32,8 @@ TEST(GjkOverlap, AgreesWithTheExactTestOnRandomPairs) {
   int total = 0;
   for (std::size_t n : {3u, 4u, 8u, 16u, 64u, 256u, 1024u}) {
     for (int k = 0; k < pairs_for(n, 1500); ++k) {
-      const PreparedHull a = random_hull(rng, n);
-      const PreparedHull b = random_hull(rng, k % 2 == 0 ? n : 5);
-      const Pose pa = random_pose(rng, 1.5);
-      const Pose pb = random_pose(rng, 1.5);
-      const auto wa = world_vertices(a, pa);
-      const auto wb = world_vertices(b, pb);
+      const RandomPair pair = random_pair(rng, n, k % 2 == 0 ? n : 5, 1.5);
+      const auto& [a, b, pa, pb, wa, wb] = pair;
       const bool exact = hulls_overlap_exact(wa, wb);
       const mink::OverlapResult r = gjk_overlap(a, pa, b, pb);
       ASSERT_FALSE(r.reached_iteration_cap);
@@ -141,12 +137,8 @@ TEST(GjkDistance, AgreesWithBruteForceOnRandomSeparatedPairs) {
   int checked = 0;
   for (std::size_t n : {3u, 6u, 8u, 32u, 256u, 1024u}) {
     for (int k = 0; k < pairs_for(n, 1000); ++k) {
-      const PreparedHull a = random_hull(rng, n);
-      const PreparedHull b = random_hull(rng, k % 3 == 0 ? 4 : n);
-      const Pose pa = random_pose(rng, 2.5);
-      const Pose pb = random_pose(rng, 2.5);
-      const auto wa = world_vertices(a, pa);
-      const auto wb = world_vertices(b, pb);
+      const RandomPair pair = random_pair(rng, n, k % 3 == 0 ? 4 : n, 2.5);
+      const auto& [a, b, pa, pb, wa, wb] = pair;
       const mink::DistanceResult r = gjk_distance(a, pa, b, pb);
       ASSERT_FALSE(r.reached_iteration_cap);
       if (hulls_overlap_exact(wa, wb)) {
@@ -225,12 +217,8 @@ TEST(Penetration, AgreesWithBruteForceAndUndoesTheOverlap) {
   int checked = 0;
   for (std::size_t n : {3u, 4u, 8u, 32u, 256u, 1024u}) {
     for (int k = 0; k < pairs_for(n, 1000); ++k) {
-      const PreparedHull a = random_hull(rng, n);
-      const PreparedHull b = random_hull(rng, k % 2 == 0 ? 5 : n);
-      const Pose pa = random_pose(rng, 0.8);
-      const Pose pb = random_pose(rng, 0.8);
-      const auto wa = world_vertices(a, pa);
-      const auto wb = world_vertices(b, pb);
+      const RandomPair pair = random_pair(rng, n, k % 2 == 0 ? 5 : n, 0.8);
+      const auto& [a, b, pa, pb, wa, wb] = pair;
       if (!hulls_overlap_exact(wa, wb)) continue;
       const mink::DistanceResult d = gjk_distance(a, pa, b, pb);
       ASSERT_TRUE(d.overlap);

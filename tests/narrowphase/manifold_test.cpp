@@ -133,12 +133,8 @@ TEST(Manifold, AgreesWithBruteForceOnRandomPairs) {
   for (int k = 0; k < 4000 / kScale; ++k) {
     const std::size_t na = k % 3 == 0 ? 4 : (k % 3 == 1 ? 7 : 40);
     const std::size_t nb = k % 5 == 0 ? 300 : 5;
-    const PreparedHull a = random_hull(rng, na);
-    const PreparedHull b = random_hull(rng, nb);
-    const Pose pa = random_pose(rng, 1.5);
-    const Pose pb = random_pose(rng, 1.5);
-    const auto wa = world_vertices(a, pa);
-    const auto wb = world_vertices(b, pb);
+    const RandomPair pair = random_pair(rng, na, nb, 1.5);
+    const auto& [a, b, pa, pb, wa, wb] = pair;
     const bool overlap = mink::hulls_overlap_exact(wa, wb);
     const Real distance = overlap ? 0 : brute_distance(wa, wb);
     const Manifold m = collide_hulls(a, pa, b, pb, margin);

@@ -66,6 +66,26 @@ inline std::vector<Vec2> world_vertices(const PreparedHull& hull, const Pose& po
   return world;
 }
 
+// Two random hulls in random poses, with their world vertices for the brute-force oracles.
+struct RandomPair {
+  PreparedHull a;
+  PreparedHull b;
+  Pose pa;
+  Pose pb;
+  std::vector<Vec2> wa;
+  std::vector<Vec2> wb;
+};
+
+inline RandomPair random_pair(std::mt19937_64& rng, std::size_t na, std::size_t nb, Real spread) {
+  PreparedHull a = random_hull(rng, na);
+  PreparedHull b = random_hull(rng, nb);
+  const Pose pa = random_pose(rng, spread);
+  const Pose pb = random_pose(rng, spread);
+  auto wa = world_vertices(a, pa);
+  auto wb = world_vertices(b, pb);
+  return {std::move(a), std::move(b), pa, pb, std::move(wa), std::move(wb)};
+}
+
 inline Real point_segment_distance(const Vec2& p, const Vec2& s0, const Vec2& s1) {
   const Vec2 e = s1 - s0;
   const Real len2 = e.squaredNorm();
