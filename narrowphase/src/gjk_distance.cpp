@@ -1,6 +1,8 @@
 #include "mink/narrowphase/gjk_distance.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "pair_frame.hpp"
 
@@ -133,6 +135,8 @@ DistanceResult gjk_distance(const PreparedHull& a, const Pose& pose_a, const Pre
   const detail::PairFrame frame(a, pose_a, b, pose_b);
   DistanceResult result;
   Simplex s = initial_simplex(frame, cache);
+  // A cold start took one support point; cached vertices cost none.
+  result.iterations = cache != nullptr && cache->count > 0 ? 0 : 1;
   Reduced r;
   const int cap = static_cast<int>(2 * (a.size() + b.size())) + 16;
   bool overlap = false;
@@ -214,6 +218,30 @@ DistanceResult gjk_distance(const PreparedHull& a, const Pose& pose_a, const Pre
     }
   }
   return result;
+}
+
+BruteDistance hull_distance_brute(std::span<const Vec2> a, std::span<const Vec2> b) {
+  BruteDistance best{std::numeric_limits<Real>::infinity(), Vec2(0, 0)};
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::span<const Vec2> p = pass == 0 ? a : b;
+    const std::span<const Vec2> q = pass == 0 ? b : a;
+    for (const Vec2& v : p) {
+      for (std::size_t i = 0; i < q.size(); ++i) {
+        const Vec2& s0 = q[i];
+        const Vec2 e = q[(i + 1) % q.size()] - s0;
+        const Real len2 = e.squaredNorm();
+        const Real t = len2 > 0 ? std::clamp((v - s0).dot(e) / len2, Real(0), Real(1)) : 0;
+        const Vec2 gap = v - (s0 + t * e);  // from q's nearest point to v
+        const Real d = gap.norm();
+        if (d < best.distance) {
+          best.distance = d;
+          const Vec2 u = d > 0 ? Vec2(gap / d) : Vec2(0, 0);
+          best.normal = pass == 0 ? Vec2(-u) : u;  // v on A: from B's point to A's
+        }
+      }
+    }
+  }
+  return best;
 }
 
 }  // namespace mink

@@ -16,6 +16,7 @@
 
 #include "mink/geometry/convex_hull.hpp"
 #include "mink/geometry/point_sets.hpp"
+#include "mink/narrowphase/gjk_distance.hpp"
 #include "mink/narrowphase/pose.hpp"
 #include "mink/narrowphase/prepared_hull.hpp"
 
@@ -93,20 +94,9 @@ inline Real point_segment_distance(const Vec2& p, const Vec2& s0, const Vec2& s1
   return (p - (s0 + t * e)).norm();
 }
 
-// Distance between two disjoint convex polygons: the nearest pair always involves a vertex of
-// one and an edge of the other.
+// Distance between two disjoint convex polygons by the library's slow twin (a plain scan).
 inline Real brute_distance(std::span<const Vec2> a, std::span<const Vec2> b) {
-  Real best = std::numeric_limits<Real>::infinity();
-  for (int pass = 0; pass < 2; ++pass) {
-    const std::span<const Vec2> p = pass == 0 ? a : b;
-    const std::span<const Vec2> q = pass == 0 ? b : a;
-    for (const Vec2& v : p) {
-      for (std::size_t i = 0; i < q.size(); ++i) {
-        best = std::min(best, point_segment_distance(v, q[i], q[(i + 1) % q.size()]));
-      }
-    }
-  }
-  return best;
+  return mink::hull_distance_brute(a, b).distance;
 }
 
 struct BruteDepth {
