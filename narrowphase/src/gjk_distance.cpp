@@ -208,15 +208,8 @@ DistanceResult gjk_distance(const PreparedHull& a, const Pose& pose_a, const Pre
       result.overlap = true;
     }
   }
-  result.simplex = frame.to_world(s);
-  if (cache != nullptr) {
-    cache->count = s.count;
-    for (int i = 0; i < s.count; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      cache->index_a[k] = s.vertices[k].index_a;
-      cache->index_b[k] = s.vertices[k].index_b;
-    }
-  }
+  result.simplex = detail::PairFrame::indices(s);
+  if (cache != nullptr) *cache = result.simplex;
   return result;
 }
 

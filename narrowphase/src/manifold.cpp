@@ -87,7 +87,7 @@ Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const Prepared
   const detail::FaceSeparation on_b = detail::max_face_separation(b, a, a_to_b);
   if (on_b.separation > speculative_distance) return manifold;
   const bool apart = std::max(on_a.separation, on_b.separation) > 0;
-  DistanceResult nearest;
+  DistanceResult nearest{};
   if (apart) {
     // The face separation only bounds the distance from below (corner to corner it is
     // smaller), so the margin is checked against the true distance.
@@ -140,13 +140,13 @@ Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const Prepared
       point.separation = nearest.distance;
       // The lowest index pair of the final simplex names the features independently of the
       // order GJK found them in.
-      std::uint32_t ia = nearest.simplex.vertices[0].index_a;
-      std::uint32_t ib = nearest.simplex.vertices[0].index_b;
-      for (int k = 1; k < nearest.simplex.count; ++k) {
-        const SimplexVertex& v = nearest.simplex.vertices[static_cast<std::size_t>(k)];
-        if (v.index_a < ia || (v.index_a == ia && v.index_b < ib)) {
-          ia = v.index_a;
-          ib = v.index_b;
+      const SimplexCache& s = nearest.simplex;
+      std::uint32_t ia = s.index_a[0];
+      std::uint32_t ib = s.index_b[0];
+      for (std::size_t k = 1; k < static_cast<std::size_t>(s.count); ++k) {
+        if (s.index_a[k] < ia || (s.index_a[k] == ia && s.index_b[k] < ib)) {
+          ia = s.index_a[k];
+          ib = s.index_b[k];
         }
       }
       point.id = feature_id(ia, ib, kNearest);

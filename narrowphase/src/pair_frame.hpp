@@ -45,16 +45,16 @@ class PairFrame {
     return vertex(ia, ib);
   }
 
-  // The simplex in world coordinates.
-  Simplex to_world(const Simplex& local) const {
-    Simplex world = local;
-    for (int i = 0; i < local.count; ++i) {
-      SimplexVertex& v = world.vertices[static_cast<std::size_t>(i)];
-      v.a = pose_a_.apply(v.a);
-      v.b = pose_a_.apply(v.b);
-      v.point = pose_a_.rotation.apply(v.point);
+  // The vertex pairs of a simplex.
+  static SimplexCache indices(const Simplex& s) {
+    SimplexCache c;
+    c.count = s.count;
+    for (int i = 0; i < s.count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      c.index_a[k] = s.vertices[k].index_a;
+      c.index_b[k] = s.vertices[k].index_b;
     }
-    return world;
+    return c;
   }
 
  private:
@@ -64,11 +64,13 @@ class PairFrame {
   Pose relative_;
 };
 
-// Multiplies v by a power of two (exact) so its largest component lies in [1, 2): directions
-// keep their sign tests meaningful at huge and tiny coordinates. Zero stays zero.
+// Multiplies v by a power of two (exact) so its largest component lies in [1, 2) when it is
+// huge or tiny: directions keep their sign tests meaningful (no overflow to infinity, no
+// underflow to zero in dot products) at any coordinates. Ordinary magnitudes pass unchanged,
+// which keeps the common case free of libm calls. Zero stays zero.
 inline Vec2 rescaled_direction(const Vec2& v) {
   const Real m = std::max(std::abs(v.x()), std::abs(v.y()));
-  if (m == 0 || !std::isfinite(m)) return v;
+  if ((m >= 0x1p-200 && m <= 0x1p200) || m == 0 || !std::isfinite(m)) return v;
   const int e = std::ilogb(m);
   return Vec2(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e));
 }

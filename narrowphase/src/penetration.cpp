@@ -39,14 +39,17 @@ PenetrationResult penetration_by_faces(const PreparedHull& a, const Pose& pose_a
 }
 
 PenetrationResult penetration(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
-                              const Pose& pose_b, const Simplex& start) {
+                              const Pose& pose_b, const SimplexCache& start) {
   const detail::PairFrame frame(a, pose_a, b, pose_b);
   if (start.count != 3) return penetration_by_faces(a, pose_a, b, pose_b);
   std::vector<SimplexVertex> polygon;
   polygon.reserve(16);
   for (int i = 0; i < 3; ++i) {
-    const SimplexVertex& v = start.vertices[static_cast<std::size_t>(i)];
-    polygon.push_back(frame.vertex(v.index_a, v.index_b));
+    const auto k = static_cast<std::size_t>(i);
+    if (start.index_a[k] >= a.size() || start.index_b[k] >= b.size()) {
+      return penetration_by_faces(a, pose_a, b, pose_b);
+    }
+    polygon.push_back(frame.vertex(start.index_a[k], start.index_b[k]));
   }
   const int winding = orient2d(polygon[0].point, polygon[1].point, polygon[2].point);
   if (winding == 0) return penetration_by_faces(a, pose_a, b, pose_b);

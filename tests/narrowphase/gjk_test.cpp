@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "mink/geometry/orientation.hpp"
 #include "mink/narrowphase/gjk_distance.hpp"
 #include "mink/narrowphase/gjk_overlap.hpp"
 #include "mink/narrowphase/penetration.hpp"
@@ -49,7 +50,22 @@ TEST(GjkOverlap, AgreesWithTheExactTestOnRandomPairs) {
         for (const Vec2& v : wb) min_b = std::min(min_b, v.dot(d));
         EXPECT_LT(max_a, min_b);
       } else {
-        EXPECT_GE(r.simplex.count, 1);
+        // The final simplex, drawn in world coordinates, holds the origin.
+        ASSERT_GE(r.simplex.count, 1);
+        const mink::Simplex s = mink::world_simplex(r.simplex, a, pa, b, pb);
+        for (int i = 0; i < s.count; ++i) {
+          const auto& v = s.vertices[static_cast<std::size_t>(i)];
+          EXPECT_EQ(v.a, wa[v.index_a]);
+          EXPECT_EQ(v.point, v.a - v.b);
+        }
+        if (s.count == 3) {
+          const Vec2 o(0, 0);
+          const auto& p = s.vertices;
+          const int w = mink::orient2d(p[0].point, p[1].point, p[2].point);
+          EXPECT_NE(mink::orient2d(p[0].point, p[1].point, o), -w);
+          EXPECT_NE(mink::orient2d(p[1].point, p[2].point, o), -w);
+          EXPECT_NE(mink::orient2d(p[2].point, p[0].point, o), -w);
+        }
       }
       overlapping += exact;
       ++total;
@@ -254,7 +270,8 @@ TEST(Penetration, DegenerateStartsFallBackToTheFaceTest) {
   const mink::PenetrationResult q = penetration(a, kIdentity, a, kIdentity, same.simplex);
   EXPECT_NEAR(q.depth, 1, 1e-15);
   // An empty simplex is allowed too.
-  EXPECT_NEAR(penetration(a, kIdentity, a, pose_at(0.25, 0.1), mink::Simplex{}).depth, 0.75, 1e-15);
+  EXPECT_NEAR(penetration(a, kIdentity, a, pose_at(0.25, 0.1), mink::SimplexCache{}).depth, 0.75,
+              1e-15);
 }
 
 }  // namespace

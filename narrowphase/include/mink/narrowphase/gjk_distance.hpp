@@ -16,7 +16,7 @@ struct DistanceResult {
   Vec2 normal{0, 0};     // unit, from A towards B, when apart; zero when overlapping
   int iterations = 0;    // support points taken
   bool reached_iteration_cap = false;
-  Simplex simplex;  // world coordinates; EPA starts from it
+  SimplexCache simplex;  // the final simplex as vertex pairs; EPA starts from it
 };
 
 // GJK distance: the point of A - B nearest the origin by Voronoi-region simplex reduction.
