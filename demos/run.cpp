@@ -16,6 +16,10 @@ int run(int argc, const char* const* argv, Streams streams) {
   std::map<std::string, Action> actions;
   actions["hull"] = add_hull_command(app, streams);
   actions["demo"] = add_demo_command(app, streams);
+  actions["overlap"] = add_overlap_command(app, streams);
+#ifdef MINK_WITH_BOX2D
+  actions["crosscheck"] = add_crosscheck_command(app, streams);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
