@@ -16,6 +16,7 @@ int run(int argc, const char* const* argv, Streams streams) {
   std::map<std::string, Action> actions;
   actions["hull"] = add_hull_command(app, streams);
   actions["demo"] = add_demo_command(app, streams);
+  actions["paper"] = add_paper_command(app, streams);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "mink/error.hpp"
@@ -24,18 +25,25 @@ void Camera::resize(int width_pixels, int height_pixels) {
 }
 
 void Camera::fit(const Vec2& lower, const Vec2& upper, Real margin_pixels) {
+  fit_region(lower, upper, Vec2(0, 0), Vec2(width_, height_), margin_pixels);
+}
+
+void Camera::fit_region(const Vec2& lower, const Vec2& upper, const Vec2& region_min,
+                        const Vec2& region_max, Real margin_pixels) {
   if (!lower.allFinite() || !upper.allFinite() || lower.x() > upper.x() || lower.y() > upper.y()) {
     std::ostringstream message;
     message << "camera box [(" << lower.x() << ", " << lower.y() << "), (" << upper.x() << ", "
             << upper.y() << ")] must be finite with lower <= upper";
     throw InvalidArgumentError(message.str());
   }
-  const Real room_x = width_ - 2 * margin_pixels;
-  const Real room_y = height_ - 2 * margin_pixels;
-  if (!std::isfinite(margin_pixels) || margin_pixels < 0 || room_x <= 0 || room_y <= 0) {
+  const Vec2 region = region_max - region_min;
+  const Real room_x = region.x() - 2 * margin_pixels;
+  const Real room_y = region.y() - 2 * margin_pixels;
+  if (!region_min.allFinite() || !region_max.allFinite() || !std::isfinite(margin_pixels) ||
+      margin_pixels < 0 || !(room_x > 0) || !(room_y > 0)) {
     std::ostringstream message;
-    message << "camera margin " << margin_pixels << " leaves no room in a " << width_ << " x "
-            << height_ << " frame";
+    message << "camera margin " << margin_pixels << " leaves no room in a " << region.x() << " x "
+            << region.y() << " pixel region";
     throw InvalidArgumentError(message.str());
   }
   const Vec2 extent = upper - lower;
@@ -45,6 +53,7 @@ void Camera::fit(const Vec2& lower, const Vec2& upper, Real margin_pixels) {
   if (extent.y() > 0) scale = std::min(scale, room_y / extent.y());
   if (!std::isfinite(scale) || scale <= 0) scale = 1;  // a single point: unit zoom
   center_ = (lower + upper) / 2;
+  center_pixel_ = (region_min + region_max) / 2;
   scale_ = scale;
 }
 
@@ -58,6 +67,7 @@ void Camera::follow(const Vec2& point, Real pixels_per_unit) {
     throw InvalidArgumentError(message.str());
   }
   center_ = point;
+  center_pixel_ = Vec2(width_ / 2.0, height_ / 2.0);
   scale_ = pixels_per_unit;
 }
 

@@ -27,6 +27,20 @@ TEST(Camera, FitShowsTheWholeBoxCentredWithTheMarginOnTheTightSide) {
   EXPECT_TRUE(camera.world_to_pixel(Vec2(0, -5)).isApprox(Vec2(100, 90)));
 }
 
+TEST(Camera, FitRegionPlacesTheBoxInAPanel) {
+  Camera camera(400, 200);
+  // The right half of the frame, 10 pixels of margin: 180 pixels for 4 units.
+  camera.fit_region(Vec2(0, 0), Vec2(4, 4), Vec2(200, 0), Vec2(400, 200), 10);
+  EXPECT_DOUBLE_EQ(camera.pixels_per_unit(), 45);
+  EXPECT_TRUE(camera.world_to_pixel(Vec2(2, 2)).isApprox(Vec2(300, 100)));
+  EXPECT_TRUE(camera.world_to_pixel(Vec2(0, 4)).isApprox(Vec2(210, 10)));
+  EXPECT_THROW(camera.fit_region(Vec2(0, 0), Vec2(1, 1), Vec2(10, 10), Vec2(5, 50)),
+               mink::InvalidArgumentError);
+  // Following recentres on the frame.
+  camera.follow(Vec2(1, 1), 2);
+  EXPECT_TRUE(camera.world_to_pixel(Vec2(1, 1)).isApprox(Vec2(200, 100)));
+}
+
 TEST(Camera, PixelToWorldUndoesWorldToPixel) {
   Camera camera(640, 480);
   camera.follow(Vec2(3.5, -2), 37.5);

@@ -15,6 +15,10 @@ class Camera {
   // tightest side. Throws InvalidArgumentError for a non-finite or inverted box, or a margin
   // that leaves no room. A box of zero width or height is shown at the scale of its other side.
   void fit(const Vec2& lower, const Vec2& upper, Real margin_pixels = 16);
+  // The same into the pixel rectangle [region_min, region_max] of the frame (a panel of a
+  // figure); the rectangle may reach outside the frame.
+  void fit_region(const Vec2& lower, const Vec2& upper, const Vec2& region_min,
+                  const Vec2& region_max, Real margin_pixels = 16);
   // Centres `point` at `pixels_per_unit` zoom (a camera following a body calls this per frame).
   void follow(const Vec2& point, Real pixels_per_unit);
   // Same centre, new frame size (a window was resized).
