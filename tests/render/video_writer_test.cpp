@@ -73,7 +73,10 @@ TEST_P(VideoWriterTest, WritesEveryRenderedFrame) {
   std::filesystem::remove(path);
 }
 
-INSTANTIATE_TEST_SUITE_P(Codecs, VideoWriterTest, testing::Values("libx264", "mpeg4"));
+INSTANTIATE_TEST_SUITE_P(Codecs, VideoWriterTest, testing::Values("libx264", "mpeg4"),
+                         [](const testing::TestParamInfo<std::string>& info) {
+                           return info.param;
+                         });
 
 TEST(VideoWriter, PicksAnEncoderThisFfmpegHas) {
   EXPECT_TRUE(mink::ffmpeg_has_encoder("ffmpeg", "mpeg4"));
