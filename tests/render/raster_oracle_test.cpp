@@ -71,6 +71,43 @@ TEST_P(RasterOracleTest, FilledHullsCoverExactlyTheirInteriorPixels) {
   EXPECT_GT(compared, cases * 128 * 96 * 8 / 10);
 }
 
+// The two-fan drawing of opaque outlined polygons against the band it replaces.
+TEST_P(RasterOracleTest, OpaqueOutlineFastPathPaintsTheSamePixelsAsTheBand) {
+  mink::RendererOptions slow_options;
+  slow_options.opaque_outline_fast_path = false;
+  slow_options.line_width_pixels = 3;
+  mink::RendererOptions fast_options = slow_options;
+  fast_options.opaque_outline_fast_path = true;
+  mink_test::Headless slow(GetParam(), 160, 120, slow_options);
+  mink_test::Headless fast(GetParam(), 160, 120, fast_options);
+  const auto draw = [](mink::Renderer& r, int seed) {
+    r.camera().fit(Vec2(-1.2, -1.2), Vec2(1.2, 1.2), 4);
+    r.begin_frame(mink::Color{0, 0, 0, 1});
+    // Hulls from large to smaller than the line width, so both branches of the fast path run.
+    for (int k = 0; k < 6; ++k) {
+      const double scale = std::pow(0.45, k);
+      auto points = mink::generate_points(mink::PointDistribution::uniform_disk, 12,
+                                          static_cast<std::uint64_t>(seed * 10 + k));
+      for (Vec2& p : points) p = p * scale + Vec2(-0.6 + 0.3 * k, 0.2 * (k % 3) - 0.2);
+      const mink::ConvexHull hull = mink::build_hull(points, mink::HullAlgorithm::graham);
+      r.draw_polygon(hull.vertices(), mink::Color{0.9f, 0.6f, 0.2f, 1},
+                     mink::Color{0.2f, 0.3f, 1, 1});
+    }
+    r.end_frame();
+    return r.read_pixels();
+  };
+  for (int seed = 0; seed < 10; ++seed) {
+    const mink::Image expected = draw(*slow.renderer, seed);
+    const mink::Image actual = draw(*fast.renderer, seed);
+    EXPECT_LT(fast.renderer->triangle_count(), slow.renderer->triangle_count());
+    int differing = 0;
+    for (int y = 0; y < expected.height; ++y) {
+      for (int x = 0; x < expected.width; ++x) differing += expected.at(x, y) != actual.at(x, y);
+    }
+    EXPECT_EQ(differing, 0) << "seed " << seed;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, RasterOracleTest,
                          testing::Values(mink::GlBackend::osmesa, mink::GlBackend::egl),
                          mink_test::backend_name);
