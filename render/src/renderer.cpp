@@ -129,7 +129,7 @@ Renderer::Renderer(GlContext& context, RendererOptions options)
     gl.EnableVertexAttribArray(0);
     gl.EnableVertexAttribArray(1);
     gl.check("vertex buffer setup");
-    if (context_.offscreen()) create_framebuffers();
+    create_framebuffers();
   } catch (...) {
     destroy_gl_objects();
     throw;
@@ -146,20 +146,27 @@ Renderer::~Renderer() {
 }
 
 void Renderer::destroy_gl_objects() {
+  destroy_framebuffers();
+  const detail::GlFunctions& gl = *gl_;
+  if (vertex_buffer_ != 0) gl.DeleteBuffers(1, &vertex_buffer_);
+  if (vertex_array_ != 0) gl.DeleteVertexArrays(1, &vertex_array_);
+  if (program_ != 0) gl.DeleteProgram(program_);
+  vertex_buffer_ = vertex_array_ = program_ = 0;
+}
+
+void Renderer::destroy_framebuffers() {
   const detail::GlFunctions& gl = *gl_;
   if (resolve_framebuffer_ != 0) gl.DeleteFramebuffers(1, &resolve_framebuffer_);
   if (resolve_color_buffer_ != 0) gl.DeleteRenderbuffers(1, &resolve_color_buffer_);
   if (framebuffer_ != 0) gl.DeleteFramebuffers(1, &framebuffer_);
   if (color_buffer_ != 0) gl.DeleteRenderbuffers(1, &color_buffer_);
-  if (vertex_buffer_ != 0) gl.DeleteBuffers(1, &vertex_buffer_);
-  if (vertex_array_ != 0) gl.DeleteVertexArrays(1, &vertex_array_);
-  if (program_ != 0) gl.DeleteProgram(program_);
   resolve_framebuffer_ = resolve_color_buffer_ = framebuffer_ = color_buffer_ = 0;
-  vertex_buffer_ = vertex_array_ = program_ = 0;
 }
 
 void Renderer::create_framebuffers() {
   const detail::GlFunctions& gl = *gl_;
+  width_ = context_.width();
+  height_ = context_.height();
   const auto make = [&](GLuint& framebuffer, GLuint& color, int samples) {
     gl.GenFramebuffers(1, &framebuffer);
     gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -195,6 +202,13 @@ void Renderer::create_framebuffers() {
 void Renderer::begin_frame(Color background) {
   pack(background);  // validates
   background_ = background;
+  if (context_.width() != width_ || context_.height() != height_) {
+    // A window was resized: frames follow its new size, the camera keeps its centre.
+    context_.make_current();
+    destroy_framebuffers();
+    create_framebuffers();
+    camera_.resize(width_, height_);
+  }
   vertices_.clear();
   runs_.clear();
 }
@@ -228,7 +242,15 @@ void Renderer::end_frame() {
     }
   }
   gl.check("drawing a frame");
-  context_.present();
+  if (!context_.offscreen()) {
+    // A window shows the frame: copy it to the window's framebuffer and swap.
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    gl.BlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+                       GL_NEAREST);
+    gl.check("copying the frame to the window");
+    context_.present();
+  }
 }
 
 Image Renderer::read_pixels(int channels) {
@@ -254,7 +276,6 @@ void Renderer::read_pixels_into(Image& image, int channels) {
     source = resolve_framebuffer_;
   }
   gl.BindFramebuffer(GL_READ_FRAMEBUFFER, source);
-  if (source == 0) gl.ReadBuffer(GL_BACK);
   gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
   const std::size_t row_bytes = static_cast<std::size_t>(w) * 4;
   readback_.resize(row_bytes * static_cast<std::size_t>(h));

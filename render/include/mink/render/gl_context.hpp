@@ -19,10 +19,11 @@ class GlContext {
   virtual void make_current() = 0;
   // Address of a GL entry point, or null when the implementation lacks it.
   virtual void* proc_address(const char* name) const = 0;
-  // Offscreen contexts have no framebuffer of their own worth drawing to: the renderer makes
-  // one (an FBO) of width() x height(). A window draws to framebuffer 0 and presents.
+  // The renderer always draws into its own framebuffer object of width() x height(); a
+  // window (offscreen() false) then gets each frame copied to its framebuffer 0 and present()ed.
   virtual bool offscreen() const = 0;
   virtual void present() {}
+  // Drawable size in pixels, which for a window changes when it is resized.
   virtual int width() const = 0;
   virtual int height() const = 0;
   virtual const char* name() const = 0;

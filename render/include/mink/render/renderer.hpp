@@ -18,7 +18,7 @@ struct GlFunctions;
 }
 
 struct RendererOptions {
-  // Multisampling of the offscreen framebuffer (0 or 1: none). Smoother edges for figures;
+  // Multisampling of the frame's framebuffer (0 or 1: none). Smoother edges for figures;
   // tests compare exact pixels without it.
   int samples = 0;
   Real line_width_pixels = 2;  // segments, outlines and circles
@@ -36,16 +36,17 @@ struct RendererOptions {
 // World shapes go through camera(); text and draw_screen_* are in pixels (x right, y down).
 class Renderer final : public DebugDraw {
  public:
-  // Makes the context current and sets up the shader, buffers and, for an offscreen context,
-  // the framebuffer. Throws GlContextError when a GL step fails, InvalidArgumentError for
-  // options out of range.
+  // Makes the context current and sets up the shader, buffers and the framebuffer frames are
+  // drawn into (a window's frames are then copied to the window). Throws GlContextError when a GL
+  // step fails, InvalidArgumentError for options out of range.
   explicit Renderer(GlContext& context, RendererOptions options = {});
   ~Renderer() override;
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  int width() const { return context_.width(); }
-  int height() const { return context_.height(); }
+  // The frame's size: the context's at the last begin_frame (a window may be resized).
+  int width() const { return width_; }
+  int height() const { return height_; }
   Camera& camera() { return camera_; }
   const Camera& camera() const { return camera_; }
   const RendererOptions& options() const { return options_; }
@@ -93,6 +94,7 @@ class Renderer final : public DebugDraw {
   void disc_pixels(const Vec2& center, Real radius, std::uint32_t rgba);
   void text_pixels(const Vec2& top_left, std::string_view text, std::uint32_t rgba);
   void create_framebuffers();
+  void destroy_framebuffers();
   void destroy_gl_objects();
 
   GlContext& context_;
@@ -100,6 +102,8 @@ class Renderer final : public DebugDraw {
   Camera camera_;
   std::unique_ptr<detail::GlFunctions> gl_;
   Color background_{0, 0, 0, 1};
+  int width_ = 0;
+  int height_ = 0;
   std::vector<Vertex> vertices_;
   struct Run {
     std::size_t first;
