@@ -20,6 +20,7 @@ int run(int argc, const char* const* argv, Streams streams) {
 #ifdef MINK_WITH_BOX2D
   actions["crosscheck"] = add_crosscheck_command(app, streams);
 #endif
+  actions["paper"] = add_paper_command(app, streams);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
