@@ -169,7 +169,7 @@ void SweepAndPrune::update_pairs(PairEvents& events) {
   events.begun.clear();
   events.ended.clear();
   if (touched_ids_.empty()) return;
-  if (built_) find_ended(events);
+  find_ended(events);
   update_structure();
   find_begun(events);
   for (const ProxyId id : touched_ids_) {
@@ -180,30 +180,22 @@ void SweepAndPrune::update_pairs(PairEvents& events) {
   store_.release_destroyed();
 }
 
-// Pairs of the previous boxes that no longer overlap. The array still holds the previous
-// boxes, so each touched proxy sweeps its own previous box through it.
+// Pairs that no longer overlap. Only a pair with a touched member can end, and testing it on
+// the current boxes is one lookup, so one pass over the pair list replaces a search with
+// each touched proxy's previous box; the survivors are compacted in place.
 void SweepAndPrune::find_ended(PairEvents& events) {
-  for (const ProxyId m : touched_ids_) {
-    const std::uint8_t touch_m = touched_[m];
-    if ((touch_m & kCreated) != 0) continue;
-    const std::uint32_t slot = slot_[m];
-    const Entry& q =
-        (slot & kOversizedBit) != 0 ? oversized_[slot & ~kOversizedBit] : entries_[slot];
-    sweep(q, [&](const Entry& e) {
-      const ProxyId o = e.id;
-      if (o == m || (q.is_static != 0 && e.is_static != 0)) return;
-      const std::uint8_t touch_o = touched_[o];
-      // A touched partner sweeps too; the smaller id reports the pair.
-      if (touch_o != 0 && o < m) return;
-      const bool ended = (touch_m & kDestroyed) != 0 || (touch_o & kDestroyed) != 0 ||
-                         !store_.fat(m).overlaps(store_.fat(o));
-      if (ended) {
-        const ProxyPair pair = ordered(m, o);
-        pairs_.erase(pair);
-        events.ended.push_back(pair);
-      }
-    });
+  std::size_t kept = 0;
+  const std::uint8_t* const touched = touched_.data();
+  for (const ProxyPair pair : pairs_) {
+    const std::uint8_t touch = touched[pair.a] | touched[pair.b];
+    if (touch != 0 &&
+        ((touch & kDestroyed) != 0 || !store_.fat(pair.a).overlaps(store_.fat(pair.b)))) {
+      events.ended.push_back(pair);
+    } else {
+      pairs_[kept++] = pair;
+    }
   }
+  pairs_.resize(kept);
 }
 
 // Pairs of the new boxes that did not overlap before (or involve a new proxy).
@@ -227,7 +219,7 @@ void SweepAndPrune::find_begun(PairEvents& events) {
                                                    : overlap(before, e));
       if (!existed) {
         const ProxyPair pair = ordered(m, o);
-        pairs_.insert(pair);
+        pairs_.push_back(pair);
         events.begun.push_back(pair);
       }
     });

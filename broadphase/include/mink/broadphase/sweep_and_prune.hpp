@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "mink/broadphase/broadphase.hpp"
-#include "mink/broadphase/pair_set.hpp"
 #include "mink/broadphase/proxy_store.hpp"
 
 namespace mink {
@@ -17,11 +16,12 @@ namespace mink {
 // are kept apart in a short list every query tests.
 //
 // Only proxies whose fat box changed (or that were created or destroyed) can begin or end
-// pairs, so update_pairs touches only those: it finds the ended pairs by sweeping each one's
-// previous box through the previous array, updates the array by an insertion sort started
-// at the changed entries (frame coherence keeps it short), then finds the begun pairs by
-// sweeping the new boxes. A pair is new exactly when the previous boxes did not overlap, so
-// persistent pairs cost no hash lookups.
+// pairs, so update_pairs searches only for those: one pass over the pair list ends the pairs
+// with a touched member whose current boxes no longer overlap (a test as cheap as a flag
+// lookup, and no index to keep), an insertion sort started at the changed entries updates
+// the array (frame coherence keeps it short), then sweeping the new boxes finds the begun
+// pairs. A pair is new exactly when the previous boxes did not overlap, so the pair list
+// needs no hash set.
 class SweepAndPrune final : public Broadphase {
  public:
   explicit SweepAndPrune(Real margin = 0.1);
@@ -31,7 +31,7 @@ class SweepAndPrune final : public Broadphase {
   bool move_proxy(ProxyId id, const Aabb& tight) override;
   void update_pairs(PairEvents& events) override;
 
-  const std::vector<ProxyPair>& pairs() const override { return pairs_.pairs(); }
+  const std::vector<ProxyPair>& pairs() const override { return pairs_; }
   const Aabb& fat_aabb(ProxyId id) const override;
   std::uint64_t user_data(ProxyId id) const override;
   std::size_t proxy_count() const override { return store_.count(); }
@@ -84,7 +84,7 @@ class SweepAndPrune final : public Broadphase {
   void find_band_starts();
 
   ProxyStore store_;
-  PairSet pairs_;
+  std::vector<ProxyPair> pairs_;  // the pair set; begun pairs appended, ended ones compacted away
 
   std::vector<Entry> entries_;             // sorted by key; boxes as of the last update
   std::vector<std::uint32_t> band_begin_;  // per band: its first index in entries_, then n
