@@ -144,6 +144,54 @@ void SweepAndPrune::sweep(const Entry& q, Visit&& visit) const {
   }
 }
 
+// The first entry in [first, last) with a key not below `key`, when none before `first` is:
+// a doubling search from `first`, cheap when the answer is near.
+const SweepAndPrune::Entry* SweepAndPrune::gallop(const Entry* first, const Entry* last,
+                                                  std::uint64_t key) {
+  const auto by_key = [](const Entry& e, std::uint64_t k) { return e.key < k; };
+  std::ptrdiff_t step = 1;
+  while (first != last && first->key < key) {
+    if (last - first <= step) return std::lower_bound(first + 1, last, key, by_key);
+    const Entry* const probe = first + step;
+    if (probe->key >= key) return std::lower_bound(first + 1, probe, key, by_key);
+    first = probe + 1;
+    step *= 2;
+  }
+  return first;
+}
+
+// sweep() over the banded entries for queries that come in array order: each band keeps
+// where the previous query's search ended and searches onward from there. A query whose
+// search bound lies below the kept one (rounding can reorder equal keys) starts afresh.
+template <typename Visit>
+void SweepAndPrune::resume_sweep(const Entry& q, Visit&& visit) {
+  const Real reach0 = max_extent0_ * (1 + kReachSlack);
+  const Real reach1 = max_extent1_ * (1 + kReachSlack);
+  const std::uint32_t first_band = band_of(below(q.lo1 - reach1));
+  const std::uint32_t last_band = band_of(q.hi1);
+  const std::uint32_t low = sweep_key(below(q.lo0 - reach0));
+  const std::uint32_t high = sweep_key(q.hi0);
+  const Entry* const entries = entries_.data();
+  for (std::uint32_t band = first_band; band <= last_band; ++band) {
+    const Entry* const band_end = entries + band_begin_[band + 1];
+    const std::uint64_t start = make_key(band, low);
+    Cursor& cursor = cursors_[band];
+    if (cursor.stamp != cursor_stamp_ || start < cursor.key) {
+      cursor = {cursor_stamp_, start, band_begin_[band]};
+    }
+    const Entry* it = gallop(entries + cursor.index, band_end, start);
+    cursor.key = start;
+    cursor.index = static_cast<std::uint32_t>(it - entries);
+    const std::uint64_t stop = make_key(band, high);
+    for (; it != band_end && it->key <= stop; ++it) {
+      if (overlap(*it, q)) visit(*it);
+    }
+  }
+  for (const Entry& e : oversized_) {
+    if (overlap(e, q)) visit(e);
+  }
+}
+
 void SweepAndPrune::find_band_starts() {
   band_begin_.resize(std::size_t{band_count_} + 1);
   const std::size_t n = entries_.size();
@@ -200,30 +248,60 @@ void SweepAndPrune::find_ended(PairEvents& events) {
 
 // Pairs of the new boxes that did not overlap before (or involve a new proxy).
 void SweepAndPrune::find_begun(PairEvents& events) {
+  // Banded entries are searched in array order, so each band's search resumes where the
+  // previous one stopped; oversized ones sweep on their own.
+  query_slots_.clear();
+  std::size_t banded = 0;
   for (const ProxyId m : touched_ids_) {
-    const std::uint8_t touch_m = touched_[m];
-    if ((touch_m & kDestroyed) != 0) continue;
+    if ((touched_[m] & kDestroyed) != 0) continue;
     const std::uint32_t slot = slot_[m];
-    const Entry& q =
-        (slot & kOversizedBit) != 0 ? oversized_[slot & ~kOversizedBit] : entries_[slot];
-    const bool m_new = (touch_m & kCreated) != 0;
-    const Entry before = m_new ? q : make_entry(null_proxy, committed_[m]);
-    sweep(q, [&](const Entry& e) {
-      const ProxyId o = e.id;
-      if (o == m || (q.is_static != 0 && e.is_static != 0)) return;
-      const std::uint8_t touch_o = touched_[o];
-      if (touch_o != 0 && o < m) return;
-      // An untouched partner's box in the array is also its previous box.
-      const bool existed = !m_new && (touch_o != 0 ? (touch_o & kCreated) == 0 &&
-                                                         committed_[m].overlaps(committed_[o])
-                                                   : overlap(before, e));
-      if (!existed) {
-        const ProxyPair pair = ordered(m, o);
-        pairs_.push_back(pair);
-        events.begun.push_back(pair);
-      }
-    });
+    if ((slot & kOversizedBit) != 0) {
+      report_begun(m, oversized_[slot & ~kOversizedBit], events,
+                   [&](const Entry& q, auto&& v) { sweep(q, v); });
+    } else {
+      ++banded;
+    }
   }
+  // Scanning the array beats sorting the slots once a fair share of the entries is touched.
+  if (banded * 8 > entries_.size()) {
+    for (std::uint32_t i = 0; i < entries_.size(); ++i) {
+      if (touched_[entries_[i].id] != 0) query_slots_.push_back(i);
+    }
+  } else {
+    for (const ProxyId m : touched_ids_) {
+      if ((touched_[m] & kDestroyed) == 0 && (slot_[m] & kOversizedBit) == 0) {
+        query_slots_.push_back(slot_[m]);
+      }
+    }
+    std::sort(query_slots_.begin(), query_slots_.end());
+  }
+  ++cursor_stamp_;
+  if (cursors_.size() < band_count_) cursors_.resize(band_count_);
+  for (const std::uint32_t slot : query_slots_) {
+    const Entry& q = entries_[slot];
+    report_begun(q.id, q, events, [&](const Entry& query, auto&& v) { resume_sweep(query, v); });
+  }
+}
+
+template <typename Sweep>
+void SweepAndPrune::report_begun(ProxyId m, const Entry& q, PairEvents& events, Sweep&& sweep) {
+  const bool m_new = (touched_[m] & kCreated) != 0;
+  const Entry before = m_new ? q : make_entry(null_proxy, committed_[m]);
+  sweep(q, [&](const Entry& e) {
+    const ProxyId o = e.id;
+    if (o == m || (q.is_static != 0 && e.is_static != 0)) return;
+    const std::uint8_t touch_o = touched_[o];
+    if (touch_o != 0 && o < m) return;
+    // An untouched partner's box in the array is also its previous box.
+    const bool existed =
+        !m_new && (touch_o != 0 ? (touch_o & kCreated) == 0 && committed_[m].overlaps(committed_[o])
+                                : overlap(before, e));
+    if (!existed) {
+      const ProxyPair pair = ordered(m, o);
+      pairs_.push_back(pair);
+      events.begun.push_back(pair);
+    }
+  });
 }
 
 void SweepAndPrune::remove_entry(ProxyId id) {

@@ -68,6 +68,14 @@ class SweepAndPrune final : public Broadphase {
   template <typename Visit>
   void sweep(const Entry& entry, Visit&& visit) const;
 
+  static const Entry* gallop(const Entry* first, const Entry* last, std::uint64_t key);
+  template <typename Visit>
+  void resume_sweep(const Entry& entry, Visit&& visit);
+  // Reports the pairs of m (whose entry is q) that sweep(q, visit) finds and that did not
+  // exist before.
+  template <typename Sweep>
+  void report_begun(ProxyId m, const Entry& q, PairEvents& events, Sweep&& sweep);
+
   void find_ended(PairEvents& events);
   void update_structure();
   void find_begun(PairEvents& events);
@@ -97,6 +105,15 @@ class SweepAndPrune final : public Broadphase {
   // Scratch, kept to avoid allocating every step.
   std::vector<std::uint32_t> changed_slots_;
   std::vector<Entry> appended_;
+  std::vector<std::uint32_t> query_slots_;
+  // Per band: where resume_sweep's last search there ended (valid while stamp matches).
+  struct Cursor {
+    std::uint64_t stamp = 0;
+    std::uint64_t key = 0;
+    std::uint32_t index = 0;
+  };
+  std::vector<Cursor> cursors_;
+  std::uint64_t cursor_stamp_ = 0;
   std::size_t dead_count_ = 0;
 
   // Layout, chosen at each rebuild.
