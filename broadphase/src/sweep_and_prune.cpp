@@ -95,14 +95,19 @@ std::uint32_t SweepAndPrune::band_of(Real band_coordinate) const {
   return static_cast<std::uint32_t>(t);
 }
 
-SweepAndPrune::Entry SweepAndPrune::make_entry(ProxyId id, const Aabb& box) const {
+SweepAndPrune::Entry SweepAndPrune::oriented(const Aabb& box) const {
   const int s = sweep_axis_;
   const int b = 1 - s;
-  Entry entry;
+  Entry entry{};
   entry.lo0 = box.lower[s];
   entry.hi0 = box.upper[s];
   entry.lo1 = box.lower[b];
   entry.hi1 = box.upper[b];
+  return entry;
+}
+
+SweepAndPrune::Entry SweepAndPrune::make_entry(ProxyId id, const Aabb& box) const {
+  Entry entry = oriented(box);
   entry.key = make_key(band_of(entry.lo1), sweep_key(entry.lo0));
   entry.id = id;
   entry.is_static = id == null_proxy ? 0 : static_cast<std::uint32_t>(store_.is_static(id));
@@ -236,12 +241,12 @@ void SweepAndPrune::find_ended(PairEvents& events) {
   const std::uint8_t* const touched = touched_.data();
   for (const ProxyPair pair : pairs_) {
     const std::uint8_t touch = touched[pair.a] | touched[pair.b];
-    if (touch != 0 &&
-        ((touch & kDestroyed) != 0 || !store_.fat(pair.a).overlaps(store_.fat(pair.b)))) {
-      events.ended.push_back(pair);
-    } else {
-      pairs_[kept++] = pair;
-    }
+    // Tested whether touched or not: a branch on the touch would be mispredicted often.
+    const bool apart = !store_.fat(pair.a).overlaps(store_.fat(pair.b));
+    const bool ended = touch != 0 && ((touch & kDestroyed) != 0 || apart);
+    pairs_[kept] = pair;
+    kept += ended ? 0 : 1;
+    if (ended) events.ended.push_back(pair);
   }
   pairs_.resize(kept);
 }
@@ -286,7 +291,7 @@ void SweepAndPrune::find_begun(PairEvents& events) {
 template <typename Sweep>
 void SweepAndPrune::report_begun(ProxyId m, const Entry& q, PairEvents& events, Sweep&& sweep) {
   const bool m_new = (touched_[m] & kCreated) != 0;
-  const Entry before = m_new ? q : make_entry(null_proxy, committed_[m]);
+  const Entry before = m_new ? q : oriented(committed_[m]);
   sweep(q, [&](const Entry& e) {
     const ProxyId o = e.id;
     if (o == m || (q.is_static != 0 && e.is_static != 0)) return;

@@ -60,6 +60,8 @@ class SweepAndPrune final : public Broadphase {
 
   void touch(ProxyId id, std::uint8_t what);
   Entry make_entry(ProxyId id, const Aabb& box) const;
+  // Only the box of an entry: enough for overlap().
+  Entry oriented(const Aabb& box) const;
   bool is_oversized(const Entry& entry) const;
   std::uint32_t band_of(Real band_coordinate) const;
 
