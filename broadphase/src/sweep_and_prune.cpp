@@ -252,6 +252,25 @@ void SweepAndPrune::find_ended(PairEvents& events) {
 }
 
 // Pairs of the new boxes that did not overlap before (or involve a new proxy).
+void SweepAndPrune::collect_touched_slots(std::size_t count,
+                                          std::vector<std::uint32_t>& out) const {
+  out.clear();
+  // A pass over the array beats sorting the slots once a fair share of the entries is
+  // touched.
+  if (count * 8 > entries_.size()) {
+    for (std::uint32_t i = 0; i < entries_.size(); ++i) {
+      if (touched_[entries_[i].id] != 0) out.push_back(i);
+    }
+    return;
+  }
+  for (const ProxyId m : touched_ids_) {
+    if ((touched_[m] & kDestroyed) == 0 && (slot_[m] & kOversizedBit) == 0) {
+      out.push_back(slot_[m]);
+    }
+  }
+  std::sort(out.begin(), out.end());
+}
+
 void SweepAndPrune::find_begun(PairEvents& events) {
   // Banded entries are searched in array order, so each band's search resumes where the
   // previous one stopped; oversized ones sweep on their own.
@@ -267,19 +286,7 @@ void SweepAndPrune::find_begun(PairEvents& events) {
       ++banded;
     }
   }
-  // Scanning the array beats sorting the slots once a fair share of the entries is touched.
-  if (banded * 8 > entries_.size()) {
-    for (std::uint32_t i = 0; i < entries_.size(); ++i) {
-      if (touched_[entries_[i].id] != 0) query_slots_.push_back(i);
-    }
-  } else {
-    for (const ProxyId m : touched_ids_) {
-      if ((touched_[m] & kDestroyed) == 0 && (slot_[m] & kOversizedBit) == 0) {
-        query_slots_.push_back(slot_[m]);
-      }
-    }
-    std::sort(query_slots_.begin(), query_slots_.end());
-  }
+  collect_touched_slots(banded, query_slots_);
   ++cursor_stamp_;
   if (cursors_.size() < band_count_) cursors_.resize(band_count_);
   for (const std::uint32_t slot : query_slots_) {
@@ -409,7 +416,7 @@ void SweepAndPrune::sort_changed() {
   if (dead_count_ == 0 && appended_.empty()) {
     // Only the changed entries and their right neighbours can be out of order, and a shift
     // at position i can only disorder position i + 1.
-    std::sort(changed_slots_.begin(), changed_slots_.end());
+    collect_touched_slots(changed_slots_.size(), changed_slots_);
     constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
     std::size_t listed = 0;
     std::size_t follow = kNone;

@@ -78,6 +78,8 @@ class SweepAndPrune final : public Broadphase {
   template <typename Sweep>
   void report_begun(ProxyId m, const Entry& q, PairEvents& events, Sweep&& sweep);
 
+  // The slots of the touched proxies in entries_, ascending; `count` of them are expected.
+  void collect_touched_slots(std::size_t count, std::vector<std::uint32_t>& out) const;
   void find_ended(PairEvents& events);
   void update_structure();
   void find_begun(PairEvents& events);
