@@ -274,7 +274,6 @@ void SweepAndPrune::collect_touched_slots(std::size_t count,
 void SweepAndPrune::find_begun(PairEvents& events) {
   // Banded entries are searched in array order, so each band's search resumes where the
   // previous one stopped; oversized ones sweep on their own.
-  query_slots_.clear();
   std::size_t banded = 0;
   for (const ProxyId m : touched_ids_) {
     if ((touched_[m] & kDestroyed) != 0) continue;
