@@ -288,8 +288,15 @@ void SweepAndPrune::find_begun(PairEvents& events) {
   collect_touched_slots(banded, query_slots_);
   ++cursor_stamp_;
   if (cursors_.size() < band_count_) cursors_.resize(band_count_);
-  for (const std::uint32_t slot : query_slots_) {
-    const Entry& q = entries_[slot];
+  // The previous boxes are indexed by id, so in array order they are scattered: fetched a
+  // few queries ahead.
+  constexpr std::size_t kAhead = 4;
+  const std::size_t count = query_slots_.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    if (k + kAhead < count) {
+      __builtin_prefetch(&committed_[entries_[query_slots_[k + kAhead]].id]);
+    }
+    const Entry& q = entries_[query_slots_[k]];
     report_begun(q.id, q, events, [&](const Entry& query, auto&& v) { resume_sweep(query, v); });
   }
 }
