@@ -17,11 +17,12 @@ namespace mink {
 //
 // Only proxies whose fat box changed (or that were created or destroyed) can begin or end
 // pairs, so update_pairs searches only for those: one pass over the pair list ends the pairs
-// with a touched member whose current boxes no longer overlap (a test as cheap as a flag
-// lookup, and no index to keep), an insertion sort started at the changed entries updates
-// the array (frame coherence keeps it short), then sweeping the new boxes finds the begun
-// pairs. A pair is new exactly when the previous boxes did not overlap, so the pair list
-// needs no hash set.
+// with a touched member whose current boxes no longer overlap (O(pairs), which the engine
+// pays anyway to visit its contacts, and no index to keep), an insertion sort started at the
+// changed entries updates the array (frame coherence keeps it short), then sweeping the new boxes
+// finds the begun pairs, in array order so that each band's search resumes where the previous one
+// stopped. A pair is new exactly when the previous boxes did not overlap, so the pair list needs no
+// hash set.
 class SweepAndPrune final : public Broadphase {
  public:
   explicit SweepAndPrune(Real margin = 0.1);
