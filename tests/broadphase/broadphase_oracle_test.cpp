@@ -333,6 +333,22 @@ TEST(SweepAndPruneOracle, MostlyStaticScene) {
   }
 }
 
+TEST(SweepAndPruneOracle, FewMoversAmongManyResting) {
+  // Few touched proxies per update: their entries are found by slot rather than by a pass
+  // over the array.
+  Layout layout = uniform_layout();
+  layout.name = "few movers";
+  layout.initial = 1200;
+  layout.steps = 60;
+  layout.move_fraction = 0.03;
+  layout.create_rate = 0.002;
+  layout.destroy_rate = 0.002;
+  for (std::uint64_t seed = 71; seed <= 72; ++seed) {
+    EXPECT_GT(run(layout, seed), std::size_t{100} / (kScale * kScale));
+    if (HasFailure()) return;
+  }
+}
+
 TEST(SweepAndPruneOracle, ClustersThatDriftApart) {
   // Dense gaussian clusters whose boxes fly off far: the layout drifts outside the bands it
   // was built for, and teleports are frequent.
