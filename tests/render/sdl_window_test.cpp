@@ -79,6 +79,31 @@ TEST(SdlWindow, ScriptedScreenshotOfAStaticDrawing) {
   EXPECT_GT(white, 50);
 }
 
+TEST(SdlWindow, FramesFollowAResizedWindow) {
+  mink::SdlWindow window("mink resize test", 200, 100, true);
+  mink::Renderer renderer(window);
+  renderer.camera().fit(Vec2(-1, -1), Vec2(1, 1), 0);
+  SDL_SetWindowSize(window.handle(), 260, 180);
+  // The X server applies the size asynchronously; give it a moment.
+  for (int i = 0; i < 100 && window.width() != 260; ++i) {
+    SDL_PumpEvents();
+    SDL_Delay(10);
+  }
+  ASSERT_EQ(window.width(), 260);
+  ASSERT_EQ(window.height(), 180);
+  renderer.begin_frame(kBackground);
+  const Vec2 square[] = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
+  renderer.draw_polygon(square, kRed, kRed);
+  renderer.end_frame();
+  const mink::Image frame = renderer.read_pixels();
+  EXPECT_EQ(frame.width, 260);
+  EXPECT_EQ(frame.height, 180);
+  // The camera kept its zoom and now centres on the new frame's middle.
+  EXPECT_EQ(renderer.camera().world_to_pixel(Vec2(0, 0)), Vec2(130, 90));
+  EXPECT_EQ(frame.at(130, 90)[0], 255);
+  EXPECT_EQ(frame.at(130, 90)[1], 0);
+}
+
 TEST(SdlWindow, ScriptedInputArrivesAsSdlEvents) {
   mink::SdlWindow window("mink input test", 200, 150, false);
   const std::uint32_t id = SDL_GetWindowID(window.handle());
