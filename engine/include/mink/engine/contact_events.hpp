@@ -1,0 +1,28 @@
+#pragma once
+
+#include "mink/engine/ids.hpp"
+
+namespace mink {
+
+// Two shapes started touching during the last step (closer than the speculative distance).
+struct ContactBeginEvent {
+  ShapeId shape_a;
+  ShapeId shape_b;
+};
+
+// Two shapes stopped touching, or one of them was destroyed while touching.
+struct ContactEndEvent {
+  ShapeId shape_a;
+  ShapeId shape_b;
+};
+
+// What the last step did, for tools and tests.
+struct StepCounters {
+  std::size_t broadphase_pairs = 0;
+  std::size_t contacts = 0;           // pairs with a contact record
+  std::size_t touching_contacts = 0;  // contacts with manifold points within touching distance
+  std::size_t awake_bodies = 0;
+  std::size_t islands = 0;  // awake islands found by the sleep pass (0 when sleep is off)
+};
+
+}  // namespace mink

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "mink/geometry/types.hpp"
+
+namespace mink::detail {
+
+// Velocity state of one body during a step, as the soft-step solver sees it: velocities plus
+// the position and rotation change since the step began (so contact separations can be
+// updated every substep without recomputing manifolds). Plain doubles, one cache line.
+struct SolverBody {
+  Real vx = 0, vy = 0, w = 0;
+  Real dpx = 0, dpy = 0;
+  Real qc = 1, qs = 0;  // rotation since the step began
+  Real pad = 0;
+};
+
+// Per-substep velocity change from gravity and forces, and damping factors.
+struct SolverBodyParams {
+  Real dvx = 0, dvy = 0, dw = 0;
+  Real linear_damping = 1, angular_damping = 1;  // factors 1 / (1 + h * damping)
+};
+
+struct ContactConstraintPoint {
+  Real ax = 0, ay = 0, bx = 0, by = 0;  // anchors from each centre of mass, fixed for the step
+  Real base_separation = 0;             // separation minus the anchors' offset along the normal
+  Real normal_mass = 0, tangent_mass = 0;
+  Real normal_impulse = 0, tangent_impulse = 0;
+  Real max_normal_impulse = 0;
+  Real relative_velocity = 0;  // normal approach speed when the step began (restitution)
+};
+
+struct ContactConstraint {
+  std::int32_t body_a = 0, body_b = 0;  // indices into the solver body array
+  std::int32_t point_count = 0;
+  std::uint32_t contact = 0;  // the contact record the impulses go back to
+  Real inv_mass_a = 0, inv_inertia_a = 0, inv_mass_b = 0, inv_inertia_b = 0;
+  Real nx = 0, ny = 0;
+  Real friction = 0, restitution = 0;
+  Real bias_rate = 0, mass_scale = 1, impulse_scale = 0;  // contact softness
+  ContactConstraintPoint points[2];
+};
+
+// Spring softness of a constraint for a substep of length h (Box2D v3's soft step).
+struct Softness {
+  Real bias_rate = 0, mass_scale = 1, impulse_scale = 0;
+};
+Softness make_softness(Real hertz, Real damping_ratio, Real h);
+
+struct SolverSettings {
+  Real h = 0;  // substep length
+  Real inv_h = 0;
+  Real max_linear_speed = 0;
+  Real contact_push_max_velocity = 0;
+  Real restitution_threshold = 0;
+  int substeps = 1;
+};
+
+// Runs every substep on the prepared arrays: integrate velocities, warm start, solve with
+// bias, integrate positions, relax without bias; then restitution. Impulses are left in the
+// constraints for the caller to store.
+void solve_contacts(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
+                    std::span<ContactConstraint> constraints, const SolverSettings& settings);
+
+}  // namespace mink::detail

@@ -1,0 +1,125 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include "contact_solver.hpp"
+#include "mink/broadphase/sweep_and_prune.hpp"
+#include "mink/engine/contact_events.hpp"
+#include "mink/engine/world.hpp"
+#include "mink/narrowphase/manifold.hpp"
+#include "mink/narrowphase/prepared_hull.hpp"
+
+namespace mink {
+
+namespace detail {
+
+struct Body {
+  // Pose: centre of mass and rotation are the state; the origin follows from them.
+  Vec2 center{0, 0};
+  Rotation rotation{};
+  Vec2 origin{0, 0};
+  Vec2 local_center{0, 0};
+  Vec2 velocity{0, 0};
+  Real angular_velocity = 0;
+  Vec2 force{0, 0};
+  Real torque = 0;
+  Real mass = 0, inv_mass = 0, inertia = 0, inv_inertia = 0;
+  Real extent = 0;  // farthest shape vertex from the centre of mass
+  Real linear_damping = 0, angular_damping = 0, gravity_scale = 1;
+  Real sleep_time = 0;
+  std::uint64_t user_data = 0;
+  std::vector<std::uint32_t> shapes;
+  std::uint32_t generation = 0;
+  std::int32_t solver_index = -1;  // during a step
+  BodyType type = BodyType::static_body;
+  bool alive = false;
+  bool awake = true;
+  bool allow_sleep = true;
+
+  Pose pose() const { return {origin, rotation}; }
+};
+
+struct Shape {
+  std::optional<PreparedHull> hull;
+  Aabb aabb;  // tight box at the current pose, grown by the speculative margin and the sweep
+  Real density = 1, friction = 0.6, restitution = 0;
+  HullAlgorithm algorithm = HullAlgorithm::chan;
+  ProxyId proxy = null_proxy;
+  std::uint32_t body = 0;
+  std::uint32_t generation = 0;
+  bool alive = false;
+};
+
+struct Contact {
+  Manifold manifold;
+  Real normal_impulse[2] = {0, 0};
+  Real tangent_impulse[2] = {0, 0};
+  Real friction = 0, restitution = 0;
+  std::uint32_t shape_a = 0, shape_b = 0;
+  std::uint32_t body_a = 0, body_b = 0;
+  ProxyId proxy_a = null_proxy, proxy_b = null_proxy;
+  bool touching = false;
+};
+
+inline std::uint64_t pair_key(ProxyId a, ProxyId b) {
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
+}
+
+}  // namespace detail
+
+struct WorldState {
+  WorldDef def;
+  std::vector<detail::Body> bodies;
+  std::vector<std::uint32_t> free_bodies;
+  std::vector<detail::Shape> shapes;
+  std::vector<std::uint32_t> free_shapes;
+  std::size_t live_bodies = 0, live_shapes = 0;
+
+  SweepAndPrune broadphase;
+  PairEvents pair_events;
+  // Proxies of destroyed shapes are released at the start of the next step, before the pair
+  // update, so a proxy id is never reused within one pair-update cycle.
+  std::vector<ProxyId> pending_proxy_destroys;
+
+  std::vector<detail::Contact> contacts;
+  std::unordered_map<std::uint64_t, std::uint32_t> contact_index;
+
+  std::vector<ContactBeginEvent> begin_events;
+  std::vector<ContactEndEvent> end_events;
+  StepCounters counters;
+
+  Real time = 0;
+  Real accumulator = 0;
+  std::uint64_t step_count = 0;
+
+  // Step scratch, kept to avoid allocating every step.
+  std::vector<detail::SolverBody> solver_bodies;
+  std::vector<detail::SolverBodyParams> solver_params;
+  std::vector<std::uint32_t> solver_to_body;
+  std::vector<detail::ContactConstraint> constraints;
+  std::vector<std::uint32_t> island_parent;
+  std::vector<Real> island_min_sleep;
+
+  detail::Body& body(BodyId id);
+  const detail::Body& body(BodyId id) const;
+  detail::Shape& shape(ShapeId id);
+  const detail::Shape& shape(ShapeId id) const;
+  ShapeId shape_id(std::uint32_t index) const { return {index, shapes[index].generation}; }
+
+  void wake(detail::Body& body);
+  void update_mass(detail::Body& body);
+  void update_shape_aabb(detail::Shape& shape, const detail::Body& body, Real dt);
+  void destroy_contact(std::uint32_t index);
+  void destroy_shape_contacts(std::uint32_t shape_index);
+
+  void update_pairs();
+  void collide();
+  void update_islands();
+  void solve();
+  void finish_step();
+};
+
+}  // namespace mink

@@ -1,0 +1,392 @@
+// One fixed step: pair update -> narrowphase -> islands and sleep -> soft-step solver ->
+// broadphase boxes for the next step.
+
+#include <algorithm>
+#include <cmath>
+
+#include "world_state.hpp"
+
+namespace mink {
+
+using detail::Body;
+using detail::Contact;
+using detail::Shape;
+
+namespace {
+
+bool moves(const Body& b) {
+  return b.type != BodyType::static_body && b.awake;
+}
+
+}  // namespace
+
+// The box the broadphase sees: the hull at the current pose, grown by the speculative
+// distance and by how far the body may move in the next step, so pairs exist before the
+// shapes meet even at speed.
+void WorldState::update_shape_aabb(Shape& s, const Body& b, Real dt) {
+  const Pose pose = b.pose();
+  const auto vertices = s.hull->vertices();
+  const Real c = pose.rotation.cos, sn = pose.rotation.sin;
+  Real lx = 0, ly = 0, ux = 0, uy = 0;
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const Real x = c * vertices[i].x() - sn * vertices[i].y();
+    const Real y = sn * vertices[i].x() + c * vertices[i].y();
+    if (i == 0) {
+      lx = ux = x;
+      ly = uy = y;
+    } else {
+      lx = std::min(lx, x), ux = std::max(ux, x);
+      ly = std::min(ly, y), uy = std::max(uy, y);
+    }
+  }
+  const Real margin = 4 * def.linear_slop + dt * std::abs(b.angular_velocity) * b.extent;
+  const Real sx = dt * b.velocity.x(), sy = dt * b.velocity.y();
+  s.aabb.lower = Vec2(pose.position.x() + lx - margin + std::min(sx, Real{0}),
+                      pose.position.y() + ly - margin + std::min(sy, Real{0}));
+  s.aabb.upper = Vec2(pose.position.x() + ux + margin + std::max(sx, Real{0}),
+                      pose.position.y() + uy + margin + std::max(sy, Real{0}));
+}
+
+void WorldState::destroy_contact(std::uint32_t index) {
+  Contact& c = contacts[index];
+  if (c.touching) end_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b)});
+  contact_index.erase(detail::pair_key(c.proxy_a, c.proxy_b));
+  const std::uint32_t last = static_cast<std::uint32_t>(contacts.size() - 1);
+  if (index != last) {
+    contacts[index] = contacts[last];
+    contact_index[detail::pair_key(contacts[index].proxy_a, contacts[index].proxy_b)] = index;
+  }
+  contacts.pop_back();
+}
+
+void WorldState::destroy_shape_contacts(std::uint32_t shape_index) {
+  // Destruction is rare: a scan keeps contacts free of per-shape lists.
+  for (std::uint32_t i = static_cast<std::uint32_t>(contacts.size()); i-- > 0;) {
+    Contact& c = contacts[i];
+    if (c.shape_a != shape_index && c.shape_b != shape_index) continue;
+    wake(bodies[c.body_a]);
+    wake(bodies[c.body_b]);
+    destroy_contact(i);
+  }
+}
+
+void WorldState::update_pairs() {
+  for (ProxyId proxy : pending_proxy_destroys) broadphase.destroy_proxy(proxy);
+  pending_proxy_destroys.clear();
+  pair_events.begun.clear();
+  pair_events.ended.clear();
+  broadphase.update_pairs(pair_events);
+
+  for (const ProxyPair& pair : pair_events.ended) {
+    const auto found = contact_index.find(detail::pair_key(pair.a, pair.b));
+    if (found != contact_index.end()) destroy_contact(found->second);
+  }
+  for (const ProxyPair& pair : pair_events.begun) {
+    const auto sa = static_cast<std::uint32_t>(broadphase.user_data(pair.a));
+    const auto sb = static_cast<std::uint32_t>(broadphase.user_data(pair.b));
+    const Shape& shape_a = shapes[sa];
+    const Shape& shape_b = shapes[sb];
+    if (!shape_a.alive || !shape_b.alive || shape_a.proxy != pair.a || shape_b.proxy != pair.b) {
+      continue;
+    }
+    if (shape_a.body == shape_b.body) continue;
+    const Body& body_a = bodies[shape_a.body];
+    const Body& body_b = bodies[shape_b.body];
+    if (body_a.type != BodyType::dynamic && body_b.type != BodyType::dynamic) continue;
+    const std::uint64_t key = detail::pair_key(pair.a, pair.b);
+    if (contact_index.contains(key)) continue;
+    Contact c;
+    c.shape_a = sa;
+    c.shape_b = sb;
+    c.body_a = shape_a.body;
+    c.body_b = shape_b.body;
+    c.proxy_a = pair.a;
+    c.proxy_b = pair.b;
+    // Mixing rules as in Box2D: geometric mean of friction, the larger restitution.
+    c.friction = std::sqrt(shape_a.friction * shape_b.friction);
+    c.restitution = std::max(shape_a.restitution, shape_b.restitution);
+    contact_index.emplace(key, static_cast<std::uint32_t>(contacts.size()));
+    contacts.push_back(c);
+  }
+}
+
+void WorldState::collide() {
+  const Real dt = def.time_step;
+  const Real touching_distance = 4 * def.linear_slop;
+  for (Contact& c : contacts) {
+    const Body& body_a = bodies[c.body_a];
+    const Body& body_b = bodies[c.body_b];
+    if (!moves(body_a) && !moves(body_b)) continue;  // asleep or static: keep as is
+    const Shape& shape_a = shapes[c.shape_a];
+    const Shape& shape_b = shapes[c.shape_b];
+    const bool was_touching = c.touching;
+    const Manifold old = c.manifold;
+    const Real old_normal[2] = {c.normal_impulse[0], c.normal_impulse[1]};
+    const Real old_tangent[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
+
+    if (!shape_a.aabb.overlaps(shape_b.aabb)) {
+      c.manifold.point_count = 0;
+    } else {
+      // Speculative distance: the base margin plus how far the pair may close this step.
+      const Vec2 dv = body_b.velocity - body_a.velocity;
+      const Real closing = dv.norm() + std::abs(body_a.angular_velocity) * body_a.extent +
+                           std::abs(body_b.angular_velocity) * body_b.extent;
+      c.manifold = collide_hulls(*shape_a.hull, body_a.pose(), *shape_b.hull, body_b.pose(),
+                                 touching_distance + dt * closing);
+    }
+    bool touching = false;
+    for (int j = 0; j < c.manifold.point_count; ++j) {
+      const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+      touching = touching || p.separation < touching_distance;
+      // Warm start: carry the impulses of the point with the same feature id.
+      c.normal_impulse[j] = 0;
+      c.tangent_impulse[j] = 0;
+      for (int k = 0; k < old.point_count; ++k) {
+        if (old.points[static_cast<std::size_t>(k)].id == p.id) {
+          c.normal_impulse[j] = old_normal[k];
+          c.tangent_impulse[j] = old_tangent[k];
+          break;
+        }
+      }
+    }
+    c.touching = touching;
+    if (touching && !was_touching) {
+      begin_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b)});
+    } else if (!touching && was_touching) {
+      end_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b)});
+    }
+  }
+}
+
+namespace {
+
+std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];  // path halving
+    i = parent[i];
+  }
+  return i;
+}
+
+}  // namespace
+
+// Islands by union-find over touching contacts between dynamic bodies, every step. An island
+// sleeps when all its bodies have been slow for time_to_sleep, and wakes as a whole when any
+// member is moving (woken by the API, hit by an awake body or a moving kinematic body).
+void WorldState::update_islands() {
+  const std::size_t n = bodies.size();
+  island_parent.resize(n);
+  island_min_sleep.assign(n, def.time_to_sleep);
+  for (std::uint32_t i = 0; i < n; ++i) island_parent[i] = i;
+  for (const Contact& c : contacts) {
+    if (!c.touching) continue;
+    Body& a = bodies[c.body_a];
+    Body& b = bodies[c.body_b];
+    if (a.type == BodyType::dynamic && b.type == BodyType::dynamic) {
+      const std::uint32_t ra = find_root(island_parent, c.body_a);
+      const std::uint32_t rb = find_root(island_parent, c.body_b);
+      if (ra != rb) island_parent[std::max(ra, rb)] = std::min(ra, rb);
+    } else if (a.type == BodyType::kinematic || b.type == BodyType::kinematic) {
+      Body& kinematic = a.type == BodyType::kinematic ? a : b;
+      Body& other = a.type == BodyType::kinematic ? b : a;
+      if (kinematic.velocity.squaredNorm() > 0 || kinematic.angular_velocity != 0) {
+        other.sleep_time = 0;
+      }
+    }
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const Body& b = bodies[i];
+    if (!b.alive || b.type != BodyType::dynamic) continue;
+    const std::uint32_t root = find_root(island_parent, i);
+    island_min_sleep[root] = std::min(island_min_sleep[root], b.allow_sleep ? b.sleep_time : 0);
+  }
+  std::size_t islands = 0;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    Body& b = bodies[i];
+    if (!b.alive || b.type != BodyType::dynamic) continue;
+    const std::uint32_t root = find_root(island_parent, i);
+    const bool awake = island_min_sleep[root] < def.time_to_sleep;
+    if (awake && root == i) ++islands;
+    if (!awake && b.awake) {
+      b.velocity = Vec2(0, 0);
+      b.angular_velocity = 0;
+    }
+    b.awake = awake;
+  }
+  counters.islands = islands;
+}
+
+void WorldState::solve() {
+  const Real dt = def.time_step;
+  const Real h = dt / def.substeps;
+
+  // Solver bodies: every awake body that moves, then one still body standing in for static
+  // and sleeping ones.
+  solver_bodies.clear();
+  solver_params.clear();
+  solver_to_body.clear();
+  for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+    Body& b = bodies[i];
+    b.solver_index = -1;
+    if (!b.alive || !moves(b)) continue;
+    b.solver_index = static_cast<std::int32_t>(solver_bodies.size());
+    detail::SolverBody sb;
+    sb.vx = b.velocity.x();
+    sb.vy = b.velocity.y();
+    sb.w = b.angular_velocity;
+    solver_bodies.push_back(sb);
+    detail::SolverBodyParams p;
+    if (b.type == BodyType::dynamic) {
+      const Vec2 dv = h * (b.inv_mass * b.force + b.gravity_scale * def.gravity);
+      p.dvx = dv.x();
+      p.dvy = dv.y();
+      p.dw = h * b.inv_inertia * b.torque;
+      p.linear_damping = 1 / (1 + h * b.linear_damping);
+      p.angular_damping = 1 / (1 + h * b.angular_damping);
+    }
+    solver_params.push_back(p);
+    solver_to_body.push_back(i);
+  }
+  const auto still = static_cast<std::int32_t>(solver_bodies.size());
+  solver_bodies.emplace_back();
+  solver_params.emplace_back();
+  counters.awake_bodies = solver_to_body.size();
+
+  const Real contact_hertz = std::min(def.contact_hertz, 0.25 * def.substeps / dt);
+  const detail::Softness soft = detail::make_softness(contact_hertz, def.contact_damping_ratio, h);
+  const detail::Softness static_soft =
+      detail::make_softness(2 * contact_hertz, def.contact_damping_ratio, h);
+
+  constraints.clear();
+  for (std::uint32_t ci = 0; ci < contacts.size(); ++ci) {
+    const Contact& c = contacts[ci];
+    if (c.manifold.point_count == 0) continue;
+    const Body& a = bodies[c.body_a];
+    const Body& b = bodies[c.body_b];
+    if (a.solver_index < 0 && b.solver_index < 0) continue;
+    detail::ContactConstraint& k = constraints.emplace_back();
+    k.contact = ci;
+    k.body_a = a.solver_index < 0 ? still : a.solver_index;
+    k.body_b = b.solver_index < 0 ? still : b.solver_index;
+    if (a.solver_index >= 0) k.inv_mass_a = a.inv_mass, k.inv_inertia_a = a.inv_inertia;
+    if (b.solver_index >= 0) k.inv_mass_b = b.inv_mass, k.inv_inertia_b = b.inv_inertia;
+    k.nx = c.manifold.normal.x();
+    k.ny = c.manifold.normal.y();
+    k.friction = c.friction;
+    k.restitution = c.restitution;
+    const detail::Softness& s = (k.inv_mass_a == 0 || k.inv_mass_b == 0) ? static_soft : soft;
+    k.bias_rate = s.bias_rate;
+    k.mass_scale = s.mass_scale;
+    k.impulse_scale = s.impulse_scale;
+    k.point_count = c.manifold.point_count;
+    const Real tx = k.ny, ty = -k.nx;
+    const Vec2 va = a.solver_index >= 0 ? a.velocity : Vec2(0, 0);
+    const Vec2 vb = b.solver_index >= 0 ? b.velocity : Vec2(0, 0);
+    const Real wa = a.solver_index >= 0 ? a.angular_velocity : 0;
+    const Real wb = b.solver_index >= 0 ? b.angular_velocity : 0;
+    for (int j = 0; j < k.point_count; ++j) {
+      const ManifoldPoint& mp = c.manifold.points[static_cast<std::size_t>(j)];
+      detail::ContactConstraintPoint& p = k.points[j];
+      p.ax = mp.point.x() - a.center.x();
+      p.ay = mp.point.y() - a.center.y();
+      p.bx = mp.point.x() - b.center.x();
+      p.by = mp.point.y() - b.center.y();
+      p.base_separation = mp.separation - ((p.bx - p.ax) * k.nx + (p.by - p.ay) * k.ny);
+      const Real rna = p.ax * k.ny - p.ay * k.nx;
+      const Real rnb = p.bx * k.ny - p.by * k.nx;
+      const Real kn =
+          k.inv_mass_a + k.inv_mass_b + k.inv_inertia_a * rna * rna + k.inv_inertia_b * rnb * rnb;
+      p.normal_mass = kn > 0 ? 1 / kn : 0;
+      const Real rta = p.ax * ty - p.ay * tx;
+      const Real rtb = p.bx * ty - p.by * tx;
+      const Real kt =
+          k.inv_mass_a + k.inv_mass_b + k.inv_inertia_a * rta * rta + k.inv_inertia_b * rtb * rtb;
+      p.tangent_mass = kt > 0 ? 1 / kt : 0;
+      p.normal_impulse = c.normal_impulse[j];
+      p.tangent_impulse = c.tangent_impulse[j];
+      p.max_normal_impulse = 0;
+      const Real dvx = (vb.x() - wb * p.by) - (va.x() - wa * p.ay);
+      const Real dvy = (vb.y() + wb * p.bx) - (va.y() + wa * p.ax);
+      p.relative_velocity = dvx * k.nx + dvy * k.ny;
+    }
+  }
+
+  detail::SolverSettings settings;
+  settings.h = h;
+  settings.inv_h = 1 / h;
+  settings.max_linear_speed = def.max_linear_speed;
+  settings.contact_push_max_velocity = def.contact_push_max_velocity;
+  settings.restitution_threshold = def.restitution_threshold;
+  settings.substeps = def.substeps;
+  detail::solve_contacts(solver_bodies, solver_params, constraints, settings);
+
+  for (const detail::ContactConstraint& k : constraints) {
+    Contact& c = contacts[k.contact];
+    for (int j = 0; j < k.point_count; ++j) {
+      c.normal_impulse[j] = k.points[j].normal_impulse;
+      c.tangent_impulse[j] = k.points[j].tangent_impulse;
+    }
+  }
+
+  // Write poses back: centre moved by dp, rotation composed with the step's rotation.
+  for (std::size_t si = 0; si < solver_to_body.size(); ++si) {
+    Body& b = bodies[solver_to_body[si]];
+    const detail::SolverBody& sb = solver_bodies[si];
+    b.velocity = Vec2(sb.vx, sb.vy);
+    b.angular_velocity = sb.w;
+    b.center += Vec2(sb.dpx, sb.dpy);
+    const Real c = sb.qc * b.rotation.cos - sb.qs * b.rotation.sin;
+    const Real s = sb.qs * b.rotation.cos + sb.qc * b.rotation.sin;
+    const Real inv_length = 1 / std::sqrt(c * c + s * s);
+    b.rotation = {c * inv_length, s * inv_length};
+    b.origin = b.center - b.rotation.apply(b.local_center);
+    b.force = Vec2(0, 0);
+    b.torque = 0;
+  }
+}
+
+void WorldState::finish_step() {
+  const Real dt = def.time_step;
+  const Real linear_tolerance_squared = def.linear_sleep_tolerance * def.linear_sleep_tolerance;
+  const Real angular_tolerance_squared = def.angular_sleep_tolerance * def.angular_sleep_tolerance;
+  for (const std::uint32_t i : solver_to_body) {
+    Body& b = bodies[i];
+    for (std::uint32_t s : b.shapes) {
+      update_shape_aabb(shapes[s], b, dt);
+      broadphase.move_proxy(shapes[s].proxy, shapes[s].aabb);
+    }
+    if (!def.enable_sleep || !b.allow_sleep || b.type != BodyType::dynamic ||
+        b.velocity.squaredNorm() > linear_tolerance_squared ||
+        b.angular_velocity * b.angular_velocity > angular_tolerance_squared) {
+      b.sleep_time = 0;
+    } else {
+      b.sleep_time += dt;
+    }
+  }
+  std::size_t touching = 0;
+  for (const Contact& c : contacts) touching += c.touching ? 1 : 0;
+  counters.broadphase_pairs = broadphase.pairs().size();
+  counters.contacts = contacts.size();
+  counters.touching_contacts = touching;
+}
+
+void World::run_step(bool clear_events) {
+  WorldState& w = *state_;
+  if (clear_events) {
+    w.begin_events.clear();
+    w.end_events.clear();
+  }
+  w.update_pairs();
+  w.collide();
+  if (w.def.enable_sleep) {
+    w.update_islands();
+  } else {
+    w.counters.islands = 0;
+  }
+  w.solve();
+  w.finish_step();
+  w.time += w.def.time_step;
+  ++w.step_count;
+}
+
+}  // namespace mink
