@@ -1,5 +1,10 @@
 #pragma once
 
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <vector>
+
 #include "mink/geometry/convex_hull.hpp"
 
 namespace mink {
@@ -15,9 +20,33 @@ class PreparedHull {
   std::size_t size() const noexcept { return hull_.size(); }
   const Vec2& centroid() const noexcept { return centroid_; }
 
+  // Unit outward normal of edge i, the edge from vertex i to vertex i + 1 (cyclic).
+  std::span<const Vec2> normals() const noexcept { return normals_; }
+  // Largest distance from the centroid to a vertex: the hull's length scale for tolerances.
+  Real radius() const noexcept { return radius_; }
+
+  // Pseudo-angles (see pseudo_angle) of the edge normals in increasing order: entry k is the
+  // normal of edge (k + first_normal()) mod size(). The CCW normals turn once around the
+  // circle, so one rotation of the ring makes them sorted; support_index_binary searches it.
+  std::span<const Real> sorted_normal_angles() const noexcept { return sorted_angles_; }
+  std::size_t first_normal() const noexcept { return first_normal_; }
+
  private:
   ConvexHull hull_;
   Vec2 centroid_{0, 0};
+  std::vector<Vec2> normals_;
+  std::vector<Real> sorted_angles_;
+  std::size_t first_normal_ = 0;
+  Real radius_ = 0;
 };
+
+// A monotone stand-in for atan2(y, x) mapped to [0, 4): increases with the angle measured
+// counter-clockwise from the +x axis, with no trigonometry. Zero vector gives 1 (any value).
+inline Real pseudo_angle(const Vec2& v) noexcept {
+  const Real sum = std::abs(v.x()) + std::abs(v.y());
+  if (sum == 0) return 1;
+  const Real p = v.x() / sum;
+  return v.y() < 0 ? 3 + p : 1 - p;
+}
 
 }  // namespace mink

@@ -1,0 +1,27 @@
+#pragma once
+
+#include "mink/narrowphase/pose.hpp"
+#include "mink/narrowphase/prepared_hull.hpp"
+#include "mink/narrowphase/simplex.hpp"
+
+namespace mink {
+
+struct DistanceResult {
+  bool overlap = false;  // the origin is in the final simplex: touching or overlapping
+  Real distance = 0;     // 0 when overlapping
+  Vec2 point_a{0, 0};    // closest point on A (world); when overlapping, a point of the simplex
+  Vec2 point_b{0, 0};    // closest point on B (world)
+  Vec2 normal{0, 0};     // unit, from A towards B, when apart; zero when overlapping
+  int iterations = 0;    // support points taken
+  bool reached_iteration_cap = false;
+  Simplex simplex;  // world coordinates; EPA starts from it
+};
+
+// GJK distance: the point of A - B nearest the origin by Voronoi-region simplex reduction.
+// With a cache, starts from the previous query's simplex and writes the new one back; a pair
+// that moved little converges in one or two iterations. Always terminates: stops on a repeated
+// vertex, on no progress, or at an iteration cap.
+DistanceResult gjk_distance(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
+                            const Pose& pose_b, SimplexCache* cache = nullptr);
+
+}  // namespace mink

@@ -1,0 +1,139 @@
+#include "mink/narrowphase/manifold.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include "face_separation.hpp"
+#include "mink/narrowphase/gjk_distance.hpp"
+#include "mink/narrowphase/support.hpp"
+#include "pair_frame.hpp"
+
+namespace mink {
+
+namespace {
+
+// Feature ids: a contact point is either a vertex of the incident edge inside the reference
+// face (kind 0: reference edge, incident vertex) or where the incident edge crosses a side of
+// the reference face (kind 1: reference vertex, incident edge). Both stay the same while the
+// same features touch. Indices are kept modulo 2^15.
+constexpr std::uint32_t kIndexMask = 0x7fff;
+constexpr std::uint32_t kClipKind = 1u << 30;
+constexpr std::uint32_t kFlipped = 1u << 31;
+
+std::uint32_t feature_id(std::uint32_t reference, std::uint32_t incident, bool clipped) {
+  return (reference & kIndexMask) | ((incident & kIndexMask) << 15) | (clipped ? kClipKind : 0);
+}
+
+struct ClipVertex {
+  Vec2 point;
+  std::uint32_t id;
+};
+
+// Keeps the part of the segment (or single point) `in` with plane . p - limit <= 0. A
+// crossing point is added only for a strict sign change, so a vertex exactly on the side line
+// is not duplicated.
+int clip(const std::array<ClipVertex, 2>& in, int count_in, std::array<ClipVertex, 2>& out,
+         const Vec2& plane, Real limit, std::uint32_t crossing_id) {
+  int count = 0;
+  if (count_in == 0) return 0;
+  const Real d0 = plane.dot(in[0].point) - limit;
+  if (d0 <= 0) out[static_cast<std::size_t>(count++)] = in[0];
+  if (count_in < 2) return count;
+  const Real d1 = plane.dot(in[1].point) - limit;
+  if (d1 <= 0) out[static_cast<std::size_t>(count++)] = in[1];
+  if ((d0 < 0 && d1 > 0) || (d0 > 0 && d1 < 0)) {
+    const Real t = d0 / (d0 - d1);
+    out[static_cast<std::size_t>(count++)] = {in[0].point + t * (in[1].point - in[0].point),
+                                              crossing_id};
+  }
+  return count;
+}
+
+// The incident hull's edge most opposed to `normal` (incident frame).
+std::uint32_t incident_edge(const PreparedHull& incident, const Vec2& normal) {
+  const std::span<const Vec2> normals = incident.normals();
+  const std::size_t n = normals.size();
+  if (n <= kLinearSupportLimit) {
+    std::size_t best = 0;
+    Real best_dot = normals[0].dot(normal);
+    for (std::size_t i = 1; i < n; ++i) {
+      const Real dot = normals[i].dot(normal);
+      if (dot < best_dot) {
+        best = i;
+        best_dot = dot;
+      }
+    }
+    return static_cast<std::uint32_t>(best);
+  }
+  // The deepest vertex along -normal starts one of the two candidate edges.
+  const std::size_t k = support_index(incident, -normal);
+  const std::size_t before = k == 0 ? n - 1 : k - 1;
+  return static_cast<std::uint32_t>(normals[before].dot(normal) < normals[k].dot(normal) ? before
+                                                                                         : k);
+}
+
+}  // namespace
+
+Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
+                       const Pose& pose_b, Real speculative_distance) {
+  Manifold manifold;
+  const Pose b_to_a = detail::PairFrame(a, pose_a, b, pose_b).relative();
+  const detail::FaceSeparation on_a = detail::max_face_separation(a, b, b_to_a);
+  if (on_a.separation > speculative_distance) return manifold;
+  const Pose a_to_b = detail::inverse(b_to_a);
+  const detail::FaceSeparation on_b = detail::max_face_separation(b, a, a_to_b);
+  if (on_b.separation > speculative_distance) return manifold;
+  if (std::max(on_a.separation, on_b.separation) > 0) {
+    // Apart: the face separation only bounds the distance from below (corner to corner it is
+    // smaller), so the margin is checked against the true distance.
+    if (gjk_distance(a, pose_a, b, pose_b).distance > speculative_distance) return manifold;
+  }
+
+  // Prefer A's face unless B's is clearly better, so the choice does not flicker between
+  // steps when both are nearly equal (which would reset the feature ids).
+  const Real tolerance = 1e-3 * std::min(a.radius(), b.radius());
+  const bool flip = on_b.separation > on_a.separation + tolerance;
+  const PreparedHull& reference = flip ? b : a;
+  const PreparedHull& incident = flip ? a : b;
+  const Pose& incident_to_reference = flip ? a_to_b : b_to_a;
+  const Pose& reference_pose = flip ? pose_b : pose_a;
+  const std::uint32_t edge = flip ? on_b.edge : on_a.edge;
+
+  // Everything below is in the reference hull's frame.
+  const std::span<const Vec2> rv = reference.vertices();
+  const std::uint32_t edge_end = edge + 1 == rv.size() ? 0 : edge + 1;
+  const Vec2 v1 = rv[edge];
+  const Vec2 v2 = rv[edge_end];
+  const Vec2 normal = reference.normals()[edge];
+  const Vec2 tangent(-normal.y(), normal.x());  // along v1 -> v2 for a CCW hull
+
+  const std::uint32_t i1 =
+      incident_edge(incident, incident_to_reference.rotation.apply_inverse(normal));
+  const std::uint32_t i2 = i1 + 1 == incident.size() ? 0 : i1 + 1;
+  const std::array<ClipVertex, 2> segment = {
+      ClipVertex{incident_to_reference.apply(incident.vertices()[i1]), feature_id(edge, i1, false)},
+      ClipVertex{incident_to_reference.apply(incident.vertices()[i2]),
+                 feature_id(edge, i2, false)}};
+
+  std::array<ClipVertex, 2> once{};
+  std::array<ClipVertex, 2> twice{};
+  const int after_first =
+      clip(segment, 2, once, -tangent, -tangent.dot(v1), feature_id(edge, i1, true));
+  const int kept =
+      clip(once, after_first, twice, tangent, tangent.dot(v2), feature_id(edge_end, i1, true));
+
+  const Rotation& rotation = reference_pose.rotation;
+  manifold.normal = flip ? Vec2(-rotation.apply(normal)) : rotation.apply(normal);
+  for (int k = 0; k < kept; ++k) {
+    const ClipVertex& c = twice[static_cast<std::size_t>(k)];
+    const Real separation = normal.dot(c.point - v1);
+    if (separation > speculative_distance) continue;
+    ManifoldPoint& point = manifold.points[static_cast<std::size_t>(manifold.point_count++)];
+    point.point = reference_pose.apply(c.point - 0.5 * separation * normal);
+    point.separation = separation;
+    point.id = c.id | (flip ? kFlipped : 0);
+  }
+  return manifold;
+}
+
+}  // namespace mink
