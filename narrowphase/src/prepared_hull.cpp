@@ -10,7 +10,7 @@ namespace mink {
 PreparedHull::PreparedHull(ConvexHull hull) : hull_(std::move(hull)) {
   const std::span<const Vec2> v = hull_.vertices();
   const std::size_t n = v.size();
-  centroid_ = centroid(v);
+  centroid_ = mink::centroid(v);
   normals_.resize(n);
   std::vector<Real> angles(n);
   for (std::size_t i = 0; i < n; ++i) {
