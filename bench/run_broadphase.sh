@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Runs the broadphase benchmark: bench/results/broadphase.csv (median time per step of
+# Minkowski's sweep and prune and of Box2D 2.4.1's b2BroadPhase, measured in the same run).
+#
+# Usage: bench/run_broadphase.sh BUILD_DIR [Google Benchmark flags...]
+# Environment:
+#   MINK_BENCH_MAX_SIZE=N   largest number of boxes (default 100000)
+set -euo pipefail
+
+if [ $# -lt 1 ]; then
+  echo "usage: $0 BUILD_DIR [benchmark flags...]" >&2
+  exit 2
+fi
+build_dir=$1
+shift
+bench_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+binary=$build_dir/bin/mink_bench_broadphase
+csv=$bench_dir/results/broadphase.csv
+
+if [ ! -x "$binary" ]; then
+  echo "run_broadphase.sh: $binary not found; build the target mink_bench_broadphase first" >&2
+  exit 1
+fi
+mkdir -p "$bench_dir/results"
+
+args=(--csv="$csv")
+if [ -n "${MINK_BENCH_MAX_SIZE:-}" ]; then args+=(--max-size="$MINK_BENCH_MAX_SIZE"); fi
+
+started=$SECONDS
+"$binary" "${args[@]}" "$@"
+echo "Broadphase benchmark took $((SECONDS - started)) s"
+
+# Ours over Box2D per case and size, from this run's CSV.
+awk -F, 'NR > 1 { t[$1 "," $2 "," $3] = $4; if (!seen[$1 "," $2]++) order[++n] = $1 "," $2 }
+  END { for (i = 1; i <= n; ++i) { k = order[i]; o = t[k ",minkowski-sap"]; b = t[k ",box2d"];
+    if (o != "" && b != "") printf "%-22s ours/box2d = %.3f\n", k, o / b } }' "$csv"

@@ -1,0 +1,110 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "mink/broadphase/broadphase.hpp"
+#include "mink/broadphase/pair_set.hpp"
+#include "mink/broadphase/proxy_store.hpp"
+
+namespace mink {
+
+// Sweep and prune over fat boxes. The boxes live in one persistent array sorted by
+// (band, lower bound on the sweep axis): the sweep axis is the axis of larger spread, and the
+// other axis is cut into bands a few boxes high so that a sweep only meets boxes near in both
+// axes (a single sweep over a 2D world meets O(sqrt n) boxes per query). Each box sits in
+// the band of its lower bound, so it is stored once. Boxes far larger than the typical one
+// are kept apart in a short list every query tests.
+//
+// Only proxies whose fat box changed (or that were created or destroyed) can begin or end
+// pairs, so update_pairs touches only those: it finds the ended pairs by sweeping each one's
+// previous box through the previous array, updates the array by an insertion sort started
+// at the changed entries (frame coherence keeps it short), then finds the begun pairs by
+// sweeping the new boxes. A pair is new exactly when the previous boxes did not overlap, so
+// persistent pairs cost no hash lookups.
+class SweepAndPrune final : public Broadphase {
+ public:
+  explicit SweepAndPrune(Real margin = 0.1);
+
+  ProxyId create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data) override;
+  void destroy_proxy(ProxyId id) override;
+  bool move_proxy(ProxyId id, const Aabb& tight) override;
+  void update_pairs(PairEvents& events) override;
+
+  const std::vector<ProxyPair>& pairs() const override { return pairs_.pairs(); }
+  const Aabb& fat_aabb(ProxyId id) const override;
+  std::uint64_t user_data(ProxyId id) const override;
+  std::size_t proxy_count() const override { return store_.count(); }
+
+  void query(const Aabb& box, std::vector<ProxyId>& out) const override;
+  void query_point(const Vec2& point, std::vector<ProxyId>& out) const override;
+
+  // Statistics, for tests and tuning.
+  int sweep_axis() const { return sweep_axis_; }
+  std::size_t band_count() const { return band_count_; }
+  std::size_t oversized_count() const { return oversized_.size(); }
+  std::size_t rebuild_count() const { return rebuild_count_; }
+
+ private:
+  // A box in (sweep axis, band axis) coordinates, with its sort key.
+  struct Entry {
+    std::uint64_t key;
+    Real lo0, hi0, lo1, hi1;
+    ProxyId id;
+    std::uint32_t is_static;
+  };
+  // What happened to a proxy since the last update_pairs.
+  enum Touch : std::uint8_t { kMoved = 1, kCreated = 2, kDestroyed = 4 };
+  static constexpr std::uint32_t kNoSlot = ~std::uint32_t{0};
+  static constexpr std::uint32_t kOversizedBit = std::uint32_t{1} << 31;
+
+  void touch(ProxyId id, std::uint8_t what);
+  Entry make_entry(ProxyId id, const Aabb& box) const;
+  bool is_oversized(const Entry& entry) const;
+  std::uint32_t band_of(Real band_coordinate) const;
+
+  // Calls visit(entry) for every stored entry overlapping `entry`'s box.
+  template <typename Visit>
+  void sweep(const Entry& entry, Visit&& visit) const;
+
+  void find_ended(PairEvents& events);
+  void update_structure();
+  void find_begun(PairEvents& events);
+  void remove_entry(ProxyId id);
+  void place_entry(const Entry& entry);
+  // Widens the sweep reach for a new entry and counts it if it falls outside the bands.
+  void note_placed(const Entry& entry);
+  // Moves entries_[i] left to its place; true when it moved.
+  bool sink(std::size_t i, std::size_t& shifts);
+  void sort_changed();
+  void rebuild();
+  void recompute_slots();
+
+  ProxyStore store_;
+  PairSet pairs_;
+
+  std::vector<Entry> entries_;         // sorted by key; boxes as of the last update
+  std::vector<Entry> oversized_;       // unsorted; boxes as of the last update
+  std::vector<std::uint32_t> slot_;    // per id: index in entries_, or in oversized_ with the bit
+  std::vector<Aabb> committed_;        // per id: fat box as of the last update
+  std::vector<std::uint8_t> touched_;  // per id: Touch bits
+  std::vector<ProxyId> touched_ids_;
+
+  // Scratch, kept to avoid allocating every step.
+  std::vector<std::uint32_t> changed_slots_;
+  std::vector<Entry> appended_;
+  std::size_t dead_count_ = 0;
+
+  // Layout, chosen at each rebuild.
+  bool built_ = false;
+  int sweep_axis_ = 0;
+  Real band_origin_ = 0;
+  Real band_scale_ = 1;  // bands per unit length
+  std::uint32_t band_count_ = 1;
+  Real cap0_ = 0, cap1_ = 0;                // extents beyond which a box is oversized
+  Real max_extent0_ = 0, max_extent1_ = 0;  // largest extents among entries_
+  std::size_t clamped_count_ = 0;           // entries placed outside the band range
+  std::size_t rebuild_count_ = 0;
+};
+
+}  // namespace mink

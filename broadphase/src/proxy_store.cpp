@@ -1,0 +1,107 @@
+#include "mink/broadphase/proxy_store.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "mink/error.hpp"
+
+namespace mink {
+
+namespace {
+
+std::string describe(const Aabb& box) {
+  return "[(" + std::to_string(box.lower.x()) + ", " + std::to_string(box.lower.y()) + "), (" +
+         std::to_string(box.upper.x()) + ", " + std::to_string(box.upper.y()) + ")]";
+}
+
+}  // namespace
+
+void ProxyStore::check_box(const Aabb& box, std::string_view operation) {
+  if (!box.lower.allFinite() || !box.upper.allFinite()) {
+    throw InvalidArgumentError(std::string(operation) + ": box " + describe(box) +
+                               " has a non-finite coordinate");
+  }
+  if (box.lower.x() > box.upper.x() || box.lower.y() > box.upper.y()) {
+    throw InvalidArgumentError(std::string(operation) + ": box " + describe(box) +
+                               " has its lower corner above its upper corner");
+  }
+}
+
+void ProxyStore::check_point(const Vec2& point, std::string_view operation) {
+  if (!point.allFinite()) {
+    throw InvalidArgumentError(std::string(operation) + ": point (" + std::to_string(point.x()) +
+                               ", " + std::to_string(point.y()) + ") has a non-finite coordinate");
+  }
+}
+
+ProxyStore::ProxyStore(Real margin) : margin_(margin) {
+  if (!std::isfinite(margin) || margin < 0) {
+    throw InvalidArgumentError("broadphase margin " + std::to_string(margin) +
+                               " is not a finite non-negative number");
+  }
+}
+
+ProxyId ProxyStore::create(const Aabb& tight, ProxyKind kind, std::uint64_t user_data) {
+  check_box(tight, "create_proxy");
+  if (kind != ProxyKind::static_body && kind != ProxyKind::moving) {
+    throw InvalidArgumentError("create_proxy: unknown proxy kind " +
+                               std::to_string(static_cast<int>(kind)));
+  }
+  const Aabb fat = fattened(tight, "create_proxy");
+  ProxyId id;
+  if (!free_ids_.empty()) {
+    id = free_ids_.back();
+    free_ids_.pop_back();
+  } else {
+    if (alive_.size() >= null_proxy) throw InvalidArgumentError("create_proxy: too many proxies");
+    id = static_cast<ProxyId>(alive_.size());
+    fat_.emplace_back();
+    kind_.push_back(kind);
+    user_data_.push_back(0);
+    alive_.push_back(0);
+  }
+  fat_[id] = fat;
+  kind_[id] = kind;
+  user_data_[id] = user_data;
+  alive_[id] = 1;
+  ++count_;
+  return id;
+}
+
+void ProxyStore::check_alive(ProxyId id, std::string_view operation) const {
+  if (!alive(id)) {
+    throw InvalidArgumentError(std::string(operation) + ": proxy " + std::to_string(id) +
+                               " does not exist");
+  }
+}
+
+void ProxyStore::destroy(ProxyId id) {
+  check_alive(id, "destroy_proxy");
+  alive_[id] = 0;
+  destroyed_ids_.push_back(id);
+  --count_;
+}
+
+bool ProxyStore::move(ProxyId id, const Aabb& tight) {
+  check_alive(id, "move_proxy");
+  check_box(tight, "move_proxy");
+  if (fat_[id].contains(tight)) return false;
+  fat_[id] = fattened(tight, "move_proxy");
+  return true;
+}
+
+Aabb ProxyStore::fattened(const Aabb& tight, std::string_view operation) const {
+  const Aabb fat = tight.fattened(margin_);
+  if (!fat.lower.allFinite() || !fat.upper.allFinite()) {
+    throw InvalidArgumentError(std::string(operation) + ": box " + describe(tight) +
+                               " overflows when fattened by the margin");
+  }
+  return fat;
+}
+
+void ProxyStore::release_destroyed() {
+  free_ids_.insert(free_ids_.end(), destroyed_ids_.begin(), destroyed_ids_.end());
+  destroyed_ids_.clear();
+}
+
+}  // namespace mink

@@ -1,0 +1,464 @@
+#include "mink/broadphase/sweep_and_prune.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+
+namespace mink {
+
+namespace {
+
+// Band height in typical (median) box extents on the band axis: a query then spans two or
+// three bands and meets few boxes in each.
+constexpr Real kBandHeightFactor = 2.0;
+// Boxes this many typical extents long on either axis are kept out of the bands: one of them
+// in the bands would widen every sweep.
+constexpr Real kOversizeFactor = 4.0;
+constexpr std::uint32_t kMaxBands = 1u << 20;
+// The extents of the sorted boxes are rounded; reaching this much further keeps every sweep
+// conservative.
+constexpr Real kReachSlack = 1e-9;
+constexpr std::size_t kSampleSize = 1025;
+
+// Order-preserving 32-bit image of x, rounded down: the low half of a sort key. Rounding
+// down keeps the sweep bounds conservative; the exact test on the doubles decides.
+std::uint32_t sweep_key(Real x) {
+  constexpr Real kFloatMax = std::numeric_limits<float>::max();
+  const Real clamped = std::clamp(x, -kFloatMax, kFloatMax);
+  float f = static_cast<float>(clamped);
+  if (static_cast<Real>(f) > clamped) f = std::nextafter(f, -std::numeric_limits<float>::max());
+  f += 0.0f;  // -0 and +0 must map to one key
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  return (bits & 0x80000000u) != 0 ? ~bits : (bits | 0x80000000u);
+}
+
+std::uint64_t make_key(std::uint32_t band, std::uint32_t low) {
+  return (std::uint64_t{band} << 32) | low;
+}
+
+ProxyPair ordered(ProxyId x, ProxyId y) {
+  return x < y ? ProxyPair{x, y} : ProxyPair{y, x};
+}
+
+Real below(Real x) {
+  return std::nextafter(x, -std::numeric_limits<Real>::infinity());
+}
+
+}  // namespace
+
+SweepAndPrune::SweepAndPrune(Real margin) : store_(margin) {}
+
+ProxyId SweepAndPrune::create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data) {
+  const ProxyId id = store_.create(tight, kind, user_data);
+  if (id >= slot_.size()) {
+    slot_.resize(id + 1, kNoSlot);
+    committed_.resize(id + 1);
+    touched_.resize(id + 1, 0);
+  }
+  slot_[id] = kNoSlot;
+  touch(id, kCreated);
+  return id;
+}
+
+void SweepAndPrune::destroy_proxy(ProxyId id) {
+  store_.destroy(id);
+  touch(id, kDestroyed);
+}
+
+bool SweepAndPrune::move_proxy(ProxyId id, const Aabb& tight) {
+  if (!store_.move(id, tight)) return false;
+  touch(id, kMoved);
+  return true;
+}
+
+void SweepAndPrune::touch(ProxyId id, std::uint8_t what) {
+  if (touched_[id] == 0) touched_ids_.push_back(id);
+  touched_[id] |= what;
+}
+
+const Aabb& SweepAndPrune::fat_aabb(ProxyId id) const {
+  store_.check_alive(id, "fat_aabb");
+  return store_.fat(id);
+}
+
+std::uint64_t SweepAndPrune::user_data(ProxyId id) const {
+  store_.check_alive(id, "user_data");
+  return store_.user_data(id);
+}
+
+std::uint32_t SweepAndPrune::band_of(Real band_coordinate) const {
+  const Real t = (band_coordinate - band_origin_) * band_scale_;
+  if (!(t > 0)) return 0;
+  if (t >= static_cast<Real>(band_count_ - 1)) return band_count_ - 1;
+  return static_cast<std::uint32_t>(t);
+}
+
+SweepAndPrune::Entry SweepAndPrune::make_entry(ProxyId id, const Aabb& box) const {
+  const int s = sweep_axis_;
+  const int b = 1 - s;
+  Entry entry;
+  entry.lo0 = box.lower[s];
+  entry.hi0 = box.upper[s];
+  entry.lo1 = box.lower[b];
+  entry.hi1 = box.upper[b];
+  entry.key = make_key(band_of(entry.lo1), sweep_key(entry.lo0));
+  entry.id = id;
+  entry.is_static = id == null_proxy ? 0 : static_cast<std::uint32_t>(store_.is_static(id));
+  return entry;
+}
+
+bool SweepAndPrune::is_oversized(const Entry& entry) const {
+  return entry.hi0 - entry.lo0 > cap0_ || entry.hi1 - entry.lo1 > cap1_;
+}
+
+template <typename Visit>
+void SweepAndPrune::sweep(const Entry& q, Visit&& visit) const {
+  if (!entries_.empty()) {
+    // An entry overlapping q starts at most one largest extent before q on each axis.
+    const Real reach0 = max_extent0_ * (1 + kReachSlack);
+    const Real reach1 = max_extent1_ * (1 + kReachSlack);
+    const std::uint32_t first_band = band_of(below(q.lo1 - reach1));
+    const std::uint32_t last_band = band_of(q.hi1);
+    const std::uint32_t low = sweep_key(below(q.lo0 - reach0));
+    const std::uint32_t high = sweep_key(q.hi0);
+    const auto by_key = [](const Entry& e, std::uint64_t key) { return e.key < key; };
+    auto it = entries_.begin();
+    const auto end = entries_.end();
+    for (std::uint32_t band = first_band; band <= last_band; ++band) {
+      it = std::lower_bound(it, end, make_key(band, low), by_key);
+      if (it == end) break;
+      // Skips empty bands in one step.
+      const auto found_band = static_cast<std::uint32_t>(it->key >> 32);
+      if (found_band > band) {
+        if (found_band > last_band) break;
+        band = found_band;
+        it = std::lower_bound(it, end, make_key(band, low), by_key);
+      }
+      const std::uint64_t stop = make_key(band, high);
+      for (; it != end && it->key <= stop; ++it) {
+        if (it->lo0 <= q.hi0 && q.lo0 <= it->hi0 && it->lo1 <= q.hi1 && q.lo1 <= it->hi1) {
+          visit(*it);
+        }
+      }
+    }
+  }
+  for (const Entry& e : oversized_) {
+    if (e.lo0 <= q.hi0 && q.lo0 <= e.hi0 && e.lo1 <= q.hi1 && q.lo1 <= e.hi1) visit(e);
+  }
+}
+
+void SweepAndPrune::update_pairs(PairEvents& events) {
+  events.begun.clear();
+  events.ended.clear();
+  if (touched_ids_.empty()) return;
+  if (built_) find_ended(events);
+  update_structure();
+  find_begun(events);
+  for (const ProxyId id : touched_ids_) {
+    if ((touched_[id] & kDestroyed) == 0) committed_[id] = store_.fat(id);
+    touched_[id] = 0;
+  }
+  touched_ids_.clear();
+  store_.release_destroyed();
+}
+
+// Pairs of the previous boxes that no longer overlap. The array still holds the previous
+// boxes, so each touched proxy sweeps its own previous box through it.
+void SweepAndPrune::find_ended(PairEvents& events) {
+  for (const ProxyId m : touched_ids_) {
+    const std::uint8_t touch_m = touched_[m];
+    if ((touch_m & kCreated) != 0) continue;
+    const std::uint32_t slot = slot_[m];
+    const Entry& q =
+        (slot & kOversizedBit) != 0 ? oversized_[slot & ~kOversizedBit] : entries_[slot];
+    sweep(q, [&](const Entry& e) {
+      const ProxyId o = e.id;
+      if (o == m || (q.is_static != 0 && e.is_static != 0)) return;
+      const std::uint8_t touch_o = touched_[o];
+      // A touched partner sweeps too; the smaller id reports the pair.
+      if (touch_o != 0 && o < m) return;
+      const bool ended = (touch_m & kDestroyed) != 0 || (touch_o & kDestroyed) != 0 ||
+                         !store_.fat(m).overlaps(store_.fat(o));
+      if (ended) {
+        const ProxyPair pair = ordered(m, o);
+        pairs_.erase(pair);
+        events.ended.push_back(pair);
+      }
+    });
+  }
+}
+
+// Pairs of the new boxes that did not overlap before (or involve a new proxy).
+void SweepAndPrune::find_begun(PairEvents& events) {
+  for (const ProxyId m : touched_ids_) {
+    const std::uint8_t touch_m = touched_[m];
+    if ((touch_m & kDestroyed) != 0) continue;
+    const std::uint32_t slot = slot_[m];
+    const Entry& q =
+        (slot & kOversizedBit) != 0 ? oversized_[slot & ~kOversizedBit] : entries_[slot];
+    const bool m_new = (touch_m & kCreated) != 0;
+    sweep(q, [&](const Entry& e) {
+      const ProxyId o = e.id;
+      if (o == m || (q.is_static != 0 && e.is_static != 0)) return;
+      const std::uint8_t touch_o = touched_[o];
+      if (touch_o != 0 && o < m) return;
+      const bool existed =
+          !m_new && (touch_o & kCreated) == 0 && committed_[m].overlaps(committed_[o]);
+      if (!existed) {
+        const ProxyPair pair = ordered(m, o);
+        pairs_.insert(pair);
+        events.begun.push_back(pair);
+      }
+    });
+  }
+}
+
+void SweepAndPrune::remove_entry(ProxyId id) {
+  const std::uint32_t slot = slot_[id];
+  if ((slot & kOversizedBit) != 0) {
+    const std::uint32_t index = slot & ~kOversizedBit;
+    oversized_[index] = oversized_.back();
+    slot_[oversized_[index].id] = index | kOversizedBit;
+    oversized_.pop_back();
+  } else {
+    // Compacted away in sort_changed().
+    entries_[slot].id = null_proxy;
+    ++dead_count_;
+  }
+  slot_[id] = kNoSlot;
+}
+
+// Puts an entry that is not in the array yet where it belongs: the oversized list, or the
+// appended batch merged in by sort_changed().
+void SweepAndPrune::place_entry(const Entry& entry) {
+  if (is_oversized(entry)) {
+    slot_[entry.id] = static_cast<std::uint32_t>(oversized_.size()) | kOversizedBit;
+    oversized_.push_back(entry);
+  } else {
+    appended_.push_back(entry);
+  }
+}
+
+void SweepAndPrune::update_structure() {
+  std::size_t created = 0;
+  for (const ProxyId id : touched_ids_) created += (touched_[id] & kCreated) != 0 ? 1 : 0;
+  // Mass insertion, or boxes drifted far outside the bands: sort from scratch.
+  if (!built_ || created * 4 > entries_.size() || clamped_count_ * 4 > entries_.size() + 256) {
+    rebuild();
+    return;
+  }
+  changed_slots_.clear();
+  appended_.clear();
+  dead_count_ = 0;
+  for (const ProxyId id : touched_ids_) {
+    const std::uint8_t touch = touched_[id];
+    if ((touch & kCreated) != 0 && (touch & kDestroyed) != 0) continue;
+    if ((touch & kDestroyed) != 0) {
+      remove_entry(id);
+      continue;
+    }
+    const Entry entry = make_entry(id, store_.fat(id));
+    if ((touch & kCreated) != 0) {
+      place_entry(entry);
+      continue;
+    }
+    const std::uint32_t slot = slot_[id];
+    const bool oversized = is_oversized(entry);
+    if ((slot & kOversizedBit) != 0 && oversized) {
+      oversized_[slot & ~kOversizedBit] = entry;
+    } else if ((slot & kOversizedBit) == 0 && !oversized) {
+      entries_[slot] = entry;
+      changed_slots_.push_back(slot);
+    } else {
+      remove_entry(id);
+      place_entry(entry);
+    }
+  }
+  for (const std::uint32_t slot : changed_slots_) note_placed(entries_[slot]);
+  for (const Entry& entry : appended_) note_placed(entry);
+  sort_changed();
+}
+
+void SweepAndPrune::note_placed(const Entry& entry) {
+  max_extent0_ = std::max(max_extent0_, entry.hi0 - entry.lo0);
+  max_extent1_ = std::max(max_extent1_, entry.hi1 - entry.lo1);
+  const Real t = (entry.lo1 - band_origin_) * band_scale_;
+  if (t < 0 || t >= static_cast<Real>(band_count_) ||
+      (band_scale_ == 0 && entry.lo1 != band_origin_)) {
+    ++clamped_count_;
+  }
+}
+
+bool SweepAndPrune::sink(std::size_t i, std::size_t& shifts) {
+  const Entry entry = entries_[i];
+  std::size_t j = i;
+  while (j > 0 && entries_[j - 1].key > entry.key) {
+    entries_[j] = entries_[j - 1];
+    slot_[entries_[j].id] = static_cast<std::uint32_t>(j);
+    --j;
+  }
+  if (j == i) return false;
+  entries_[j] = entry;
+  slot_[entry.id] = static_cast<std::uint32_t>(j);
+  shifts += i - j;
+  return true;
+}
+
+void SweepAndPrune::sort_changed() {
+  const std::size_t n = entries_.size();
+  // Insertion sort pays while the boxes moved little; beyond this many shifts a full sort is
+  // cheaper.
+  const std::size_t budget = 8 * n + 1024;
+  std::size_t shifts = 0;
+  if (dead_count_ == 0 && appended_.empty()) {
+    // Only the changed entries and their right neighbours can be out of order, and a shift
+    // at position i can only disorder position i + 1.
+    std::sort(changed_slots_.begin(), changed_slots_.end());
+    constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+    std::size_t listed = 0;
+    std::size_t follow = kNone;
+    for (;;) {
+      const std::size_t next_listed =
+          listed < changed_slots_.size() ? changed_slots_[listed] : kNone;
+      const std::size_t i = std::min(next_listed, follow);
+      if (i >= n) break;
+      const bool was_listed = i == next_listed;
+      if (was_listed) ++listed;
+      const bool shifted = i > 0 && sink(i, shifts);
+      follow = was_listed || shifted ? i + 1 : kNone;
+      if (shifts > budget) break;
+    }
+    if (shifts <= budget) return;
+  } else {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (entries_[i].id != null_proxy) entries_[kept++] = entries_[i];
+    }
+    entries_.resize(kept);
+    for (std::size_t i = 1; i < kept && shifts <= budget; ++i) sink(i, shifts);
+    if (shifts <= budget && !appended_.empty()) {
+      const auto by_key = [](const Entry& x, const Entry& y) { return x.key < y.key; };
+      std::sort(appended_.begin(), appended_.end(), by_key);
+      entries_.insert(entries_.end(), appended_.begin(), appended_.end());
+      std::inplace_merge(entries_.begin(), entries_.begin() + static_cast<std::ptrdiff_t>(kept),
+                         entries_.end(), by_key);
+    } else if (!appended_.empty()) {
+      entries_.insert(entries_.end(), appended_.begin(), appended_.end());
+    }
+    appended_.clear();
+    dead_count_ = 0;
+    if (shifts <= budget) {
+      recompute_slots();
+      return;
+    }
+  }
+  std::sort(entries_.begin(), entries_.end(),
+            [](const Entry& x, const Entry& y) { return x.key < y.key; });
+  recompute_slots();
+}
+
+void SweepAndPrune::recompute_slots() {
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    slot_[entries_[i].id] = static_cast<std::uint32_t>(i);
+  }
+}
+
+void SweepAndPrune::rebuild() {
+  ++rebuild_count_;
+  built_ = true;
+  entries_.clear();
+  oversized_.clear();
+  appended_.clear();
+  dead_count_ = 0;
+  clamped_count_ = 0;
+
+  std::vector<ProxyId> ids;
+  ids.reserve(store_.count());
+  Vec2 low = Vec2::Constant(std::numeric_limits<Real>::infinity());
+  Vec2 high = -low;
+  for (ProxyId id = 0; id < store_.id_bound(); ++id) {
+    if (!store_.alive(id)) continue;
+    ids.push_back(id);
+    low = low.cwiseMin(store_.fat(id).lower);
+    high = high.cwiseMax(store_.fat(id).lower);
+  }
+  const std::size_t n = ids.size();
+  if (n == 0) return;
+
+  // Sweep along the axis of larger spread; cut the other one into bands.
+  const Vec2 spread = high - low;
+  sweep_axis_ = spread.x() >= spread.y() ? 0 : 1;
+  const int s = sweep_axis_;
+  const int b = 1 - s;
+
+  // Typical extents from an even sample.
+  std::vector<Real> extents0, extents1;
+  const std::size_t step = std::max<std::size_t>(1, n / kSampleSize);
+  for (std::size_t i = 0; i < n; i += step) {
+    const Aabb& box = store_.fat(ids[i]);
+    extents0.push_back(box.upper[s] - box.lower[s]);
+    extents1.push_back(box.upper[b] - box.lower[b]);
+  }
+  const auto median = [](std::vector<Real>& values) {
+    auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    return *middle;
+  };
+  const Real median0 = median(extents0);
+  const Real median1 = median(extents1);
+  constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
+  cap0_ = median0 > 0 ? kOversizeFactor * median0 : kInfinity;
+  cap1_ = median1 > 0 ? kOversizeFactor * median1 : kInfinity;
+
+  const Real range = spread[b];
+  band_origin_ = low[b];
+  band_count_ = 1;
+  band_scale_ = 0;
+  if (range > 0) {
+    Real height = kBandHeightFactor * median1;
+    if (!(height > 0)) height = range / std::sqrt(static_cast<Real>(n));
+    const Real wanted = std::floor(range / height) + 1;
+    const Real most =
+        static_cast<Real>(std::min<std::size_t>(kMaxBands, std::max<std::size_t>(1, n / 2)));
+    band_count_ = static_cast<std::uint32_t>(std::min(wanted, most));
+    band_scale_ = 1 / std::max(height, range / band_count_);
+  }
+
+  max_extent0_ = 0;
+  max_extent1_ = 0;
+  clamped_count_ = 0;
+  entries_.reserve(n);
+  for (const ProxyId id : ids) {
+    const Entry entry = make_entry(id, store_.fat(id));
+    if (is_oversized(entry)) {
+      slot_[id] = static_cast<std::uint32_t>(oversized_.size()) | kOversizedBit;
+      oversized_.push_back(entry);
+    } else {
+      note_placed(entry);
+      entries_.push_back(entry);
+    }
+  }
+  std::sort(entries_.begin(), entries_.end(),
+            [](const Entry& x, const Entry& y) { return x.key < y.key; });
+  recompute_slots();
+}
+
+void SweepAndPrune::query(const Aabb& box, std::vector<ProxyId>& out) const {
+  ProxyStore::check_box(box, "query");
+  // The array holds the boxes of the last update; touched proxies are tested on their
+  // current boxes instead.
+  sweep(make_entry(null_proxy, box), [&](const Entry& e) {
+    if (touched_[e.id] == 0) out.push_back(e.id);
+  });
+  for (const ProxyId id : touched_ids_) {
+    if ((touched_[id] & kDestroyed) == 0 && store_.fat(id).overlaps(box)) out.push_back(id);
+  }
+}
+
+void SweepAndPrune::query_point(const Vec2& point, std::vector<ProxyId>& out) const {
+  ProxyStore::check_point(point, "query_point");
+  query(Aabb{point, point}, out);
+}
+
+}  // namespace mink
