@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "mink/geometry/types.hpp"
 
@@ -58,10 +59,44 @@ struct SolverSettings {
   int substeps = 1;
 };
 
-// Runs every substep on the prepared arrays: integrate velocities, warm start, solve with
-// bias, integrate positions, relax without bias; then restitution. Impulses are left in the
-// constraints for the caller to store.
-void solve_contacts(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
-                    std::span<ContactConstraint> constraints, const SolverSettings& settings);
+// Four constraints side by side, one per lane, for the wide (SIMD) path.
+struct WideConstraint;
+
+// The soft-step solver over prepared arrays. prepare() colours the constraint graph: within
+// a colour no two constraints share a moving body, so a colour's constraints are independent
+// and are solved four at a time in SIMD lanes (the rest, when the colours run out, one by
+// one after them). solve() runs every substep: integrate velocities, warm start, solve with
+// bias, integrate positions, relax without bias; then restitution. Impulses end up in the
+// scalar constraints for the caller to store.
+class ContactSolver {
+ public:
+  ContactSolver();
+  ~ContactSolver();
+  ContactSolver(const ContactSolver&) = delete;
+  ContactSolver& operator=(const ContactSolver&) = delete;
+  ContactSolver(ContactSolver&&) noexcept;
+  ContactSolver& operator=(ContactSolver&&) noexcept;
+
+  // `still` is the index of the body standing in for static and sleeping bodies; it may be
+  // shared by any number of constraints of one colour.
+  void prepare(std::span<const ContactConstraint> constraints, std::int32_t still,
+               std::size_t body_count);
+  // `wide` false runs the same colour order one constraint at a time: the slow twin the
+  // tests compare the SIMD path against (the results are bitwise equal).
+  void solve(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
+             std::span<ContactConstraint> constraints, const SolverSettings& settings,
+             bool wide = true);
+
+  std::size_t color_count() const noexcept;
+  std::size_t overflow_count() const noexcept { return overflow_.size(); }
+
+ private:
+  std::vector<std::uint32_t> order_;        // colours concatenated
+  std::vector<std::uint32_t> color_begin_;  // into order_, one past the last colour at the end
+  std::vector<std::uint32_t> overflow_;
+  std::vector<WideConstraint> wide_;
+  std::vector<std::uint32_t> wide_begin_;  // into wide_, per colour
+  std::vector<std::uint64_t> color_bits_;
+};
 
 }  // namespace mink::detail

@@ -100,6 +100,7 @@ struct WorldState {
   std::vector<detail::SolverBodyParams> solver_params;
   std::vector<std::uint32_t> solver_to_body;
   std::vector<detail::ContactConstraint> constraints;
+  detail::ContactSolver contact_solver;
   std::vector<std::uint32_t> island_parent;
   std::vector<Real> island_min_sleep;
 
