@@ -310,41 +310,40 @@ void WorldState::solve() {
       p.relative_velocity = dvx * k.nx + dvy * k.ny;
     }
   }
-}
 
-detail::SolverSettings settings;
-settings.h = h;
-settings.inv_h = 1 / h;
-settings.max_linear_speed = def.max_linear_speed;
-settings.contact_push_max_velocity = def.contact_push_max_velocity;
-settings.restitution_threshold = def.restitution_threshold;
-settings.substeps = def.substeps;
-contact_solver.prepare(constraints, still, solver_bodies.size());
-contact_solver.solve(solver_bodies, solver_params, constraints, settings, def.simd_solver);
+  detail::SolverSettings settings;
+  settings.h = h;
+  settings.inv_h = 1 / h;
+  settings.max_linear_speed = def.max_linear_speed;
+  settings.contact_push_max_velocity = def.contact_push_max_velocity;
+  settings.restitution_threshold = def.restitution_threshold;
+  settings.substeps = def.substeps;
+  contact_solver.prepare(constraints, still, solver_bodies.size());
+  contact_solver.solve(solver_bodies, solver_params, constraints, settings, def.simd_solver);
 
-for (const detail::ContactConstraint& k : constraints) {
-  Contact& c = contacts[k.contact];
-  for (int j = 0; j < k.point_count; ++j) {
-    c.normal_impulse[j] = k.points[j].normal_impulse;
-    c.tangent_impulse[j] = k.points[j].tangent_impulse;
+  for (const detail::ContactConstraint& k : constraints) {
+    Contact& c = contacts[k.contact];
+    for (int j = 0; j < k.point_count; ++j) {
+      c.normal_impulse[j] = k.points[j].normal_impulse;
+      c.tangent_impulse[j] = k.points[j].tangent_impulse;
+    }
   }
-}
 
-// Write poses back: centre moved by dp, rotation composed with the step's rotation.
-for (std::size_t si = 0; si < solver_to_body.size(); ++si) {
-  Body& b = bodies[solver_to_body[si]];
-  const detail::SolverBody& sb = solver_bodies[si];
-  b.velocity = Vec2(sb.vx, sb.vy);
-  b.angular_velocity = sb.w;
-  b.center += Vec2(sb.dpx, sb.dpy);
-  const Real c = sb.qc * b.rotation.cos - sb.qs * b.rotation.sin;
-  const Real s = sb.qs * b.rotation.cos + sb.qc * b.rotation.sin;
-  const Real inv_length = 1 / std::sqrt(c * c + s * s);
-  b.rotation = {c * inv_length, s * inv_length};
-  b.origin = b.center - b.rotation.apply(b.local_center);
-  b.force = Vec2(0, 0);
-  b.torque = 0;
-}
+  // Write poses back: centre moved by dp, rotation composed with the step's rotation.
+  for (std::size_t si = 0; si < solver_to_body.size(); ++si) {
+    Body& b = bodies[solver_to_body[si]];
+    const detail::SolverBody& sb = solver_bodies[si];
+    b.velocity = Vec2(sb.vx, sb.vy);
+    b.angular_velocity = sb.w;
+    b.center += Vec2(sb.dpx, sb.dpy);
+    const Real c = sb.qc * b.rotation.cos - sb.qs * b.rotation.sin;
+    const Real s = sb.qs * b.rotation.cos + sb.qc * b.rotation.sin;
+    const Real inv_length = 1 / std::sqrt(c * c + s * s);
+    b.rotation = {c * inv_length, s * inv_length};
+    b.origin = b.center - b.rotation.apply(b.local_center);
+    b.force = Vec2(0, 0);
+    b.torque = 0;
+  }
 }
 
 void WorldState::finish_step() {
