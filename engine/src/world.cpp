@@ -498,5 +498,8 @@ std::span<const ContactEndEvent> World::contact_end_events() const noexcept {
 const StepCounters& World::counters() const noexcept {
   return state_->counters;
 }
+const StepProfile& World::profile() const noexcept {
+  return state_->profile;
+}
 
 }  // namespace mink

@@ -90,6 +90,7 @@ struct WorldState {
   std::vector<ContactBeginEvent> begin_events;
   std::vector<ContactEndEvent> end_events;
   StepCounters counters;
+  StepProfile profile;
 
   Real time = 0;
   Real accumulator = 0;
@@ -101,6 +102,7 @@ struct WorldState {
   std::vector<std::uint32_t> solver_to_body;
   std::vector<detail::ContactConstraint> constraints;
   detail::ContactSolver contact_solver;
+  std::int32_t still_index = 0;
   std::vector<std::uint32_t> island_parent;
   std::vector<Real> island_min_sleep;
 
@@ -119,6 +121,7 @@ struct WorldState {
   void update_pairs();
   void collide();
   void update_islands();
+  void prepare_contacts();
   void solve();
   void finish_step();
 };

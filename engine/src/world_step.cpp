@@ -2,6 +2,7 @@
 // broadphase boxes for the next step.
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "world_state.hpp"
@@ -216,7 +217,7 @@ void WorldState::update_islands() {
   counters.islands = islands;
 }
 
-void WorldState::solve() {
+void WorldState::prepare_contacts() {
   const Real dt = def.time_step;
   const Real h = dt / def.substeps;
 
@@ -248,6 +249,7 @@ void WorldState::solve() {
     solver_to_body.push_back(i);
   }
   const auto still = static_cast<std::int32_t>(solver_bodies.size());
+  still_index = still;
   solver_bodies.emplace_back();
   solver_params.emplace_back();
   counters.awake_bodies = solver_to_body.size();
@@ -311,6 +313,13 @@ void WorldState::solve() {
     }
   }
 
+  contact_solver.prepare(constraints, still_index, solver_bodies.size());
+  counters.constraint_colors = contact_solver.color_count();
+  counters.overflow_constraints = contact_solver.overflow_count();
+}
+
+void WorldState::solve() {
+  const Real h = def.time_step / def.substeps;
   detail::SolverSettings settings;
   settings.h = h;
   settings.inv_h = 1 / h;
@@ -318,7 +327,6 @@ void WorldState::solve() {
   settings.contact_push_max_velocity = def.contact_push_max_velocity;
   settings.restitution_threshold = def.restitution_threshold;
   settings.substeps = def.substeps;
-  contact_solver.prepare(constraints, still, solver_bodies.size());
   contact_solver.solve(solver_bodies, solver_params, constraints, settings, def.simd_solver);
 
   for (const detail::ContactConstraint& k : constraints) {
@@ -377,15 +385,28 @@ void World::run_step(bool clear_events) {
     w.begin_events.clear();
     w.end_events.clear();
   }
+  using Clock = std::chrono::steady_clock;
+  const auto ms = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+  };
+  const auto t0 = Clock::now();
   w.update_pairs();
+  const auto t1 = Clock::now();
   w.collide();
+  const auto t2 = Clock::now();
   if (w.def.enable_sleep) {
     w.update_islands();
   } else {
     w.counters.islands = 0;
   }
+  const auto t3 = Clock::now();
+  w.prepare_contacts();
+  const auto t4 = Clock::now();
   w.solve();
+  const auto t5 = Clock::now();
   w.finish_step();
+  const auto t6 = Clock::now();
+  w.profile = {ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t4, t5), ms(t5, t6)};
   w.time += w.def.time_step;
   ++w.step_count;
 }

@@ -22,7 +22,14 @@ struct StepCounters {
   std::size_t contacts = 0;           // pairs with a contact record
   std::size_t touching_contacts = 0;  // contacts with manifold points within touching distance
   std::size_t awake_bodies = 0;
-  std::size_t islands = 0;  // awake islands found by the sleep pass (0 when sleep is off)
+  std::size_t islands = 0;            // awake islands found by the sleep pass (0 when sleep is off)
+  std::size_t constraint_colors = 0;  // graph colours the solver used
+  std::size_t overflow_constraints = 0;  // contacts solved one at a time (colours ran out)
+};
+
+// Wall time of each phase of the last step, in milliseconds (for tuning; never for tests).
+struct StepProfile {
+  double pairs = 0, collide = 0, islands = 0, prepare = 0, solve = 0, finish = 0;
 };
 
 }  // namespace mink

@@ -108,6 +108,7 @@ class World {
   std::span<const ContactBeginEvent> contact_begin_events() const noexcept;
   std::span<const ContactEndEvent> contact_end_events() const noexcept;
   const StepCounters& counters() const noexcept;
+  const StepProfile& profile() const noexcept;
 
   // Queries against the current poses, exact (not just the broadphase boxes). Shapes come in
   // slot order.
