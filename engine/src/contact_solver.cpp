@@ -413,66 +413,64 @@ void ContactSolver::prepare(std::span<const ContactConstraint> constraints, std:
   // moving body is taken yet. The still body never blocks a colour.
   const std::size_t words = (body_count + 63) / 64;
   color_bits_.assign(kColorCount * words, 0);
-  std::vector<std::uint32_t>& colors = order_;  // reused: first the colour of each constraint
-  colors.assign(constraints.size(), kColorCount);
+  color_of_.resize(constraints.size());
   std::array<std::uint32_t, kColorCount + 1> counts{};
   overflow_.clear();
   for (std::uint32_t i = 0; i < constraints.size(); ++i) {
     const std::int32_t a = constraints[i].body_a, b = constraints[i].body_b;
+    const std::uint64_t a_bit = a == still ? 0 : std::uint64_t{1} << (a & 63);
+    const std::uint64_t b_bit = b == still ? 0 : std::uint64_t{1} << (b & 63);
+    const std::size_t a_word = static_cast<std::size_t>(a) >> 6;
+    const std::size_t b_word = static_cast<std::size_t>(b) >> 6;
     std::size_t color = 0;
-    for (; color < kColorCount; ++color) {
-      std::uint64_t* bits = &color_bits_[color * words];
-      const bool a_free = a == still || !(bits[a >> 6] >> (a & 63) & 1);
-      const bool b_free = b == still || !(bits[b >> 6] >> (b & 63) & 1);
-      if (a_free && b_free) {
-        if (a != still) bits[a >> 6] |= std::uint64_t{1} << (a & 63);
-        if (b != still) bits[b >> 6] |= std::uint64_t{1} << (b & 63);
+    for (std::uint64_t* bits = color_bits_.data(); color < kColorCount; ++color, bits += words) {
+      if (!(bits[a_word] & a_bit) && !(bits[b_word] & b_bit)) {
+        bits[a_word] |= a_bit;
+        bits[b_word] |= b_bit;
         break;
       }
     }
-    colors[i] = static_cast<std::uint32_t>(color);
+    color_of_[i] = static_cast<std::uint8_t>(color);
     ++counts[color];
     if (color == kColorCount) overflow_.push_back(i);
   }
   color_begin_.assign(kColorCount + 1, 0);
-  for (std::size_t c = 0; c < kColorCount; ++c) color_begin_[c + 1] = color_begin_[c] + counts[c];
-  std::vector<std::uint32_t> sorted(color_begin_[kColorCount]);
+  wide_begin_.assign(kColorCount + 1, 0);
+  for (std::size_t c = 0; c < kColorCount; ++c) {
+    color_begin_[c + 1] = color_begin_[c] + counts[c];
+    wide_begin_[c + 1] = wide_begin_[c] + (counts[c] + 3) / 4;
+  }
+  order_.resize(color_begin_[kColorCount]);
+  wide_.resize(wide_begin_[kColorCount]);
   std::array<std::uint32_t, kColorCount> fill{};
   for (std::size_t c = 0; c < kColorCount; ++c) fill[c] = color_begin_[c];
   for (std::uint32_t i = 0; i < constraints.size(); ++i) {
-    if (colors[i] < kColorCount) sorted[fill[colors[i]]++] = i;
+    const std::uint8_t color = color_of_[i];
+    if (color == kColorCount) continue;
+    // Position within the colour gives the batch and the lane directly.
+    const std::uint32_t k = fill[color]++;
+    order_[k] = i;
+    const std::uint32_t offset = k - color_begin_[color];
+    WideConstraint& w = wide_[wide_begin_[color] + offset / 4];
+    pack(w, static_cast<int>(offset % 4), constraints[i], i);
   }
-  order_ = std::move(sorted);
-
-  wide_.clear();
-  wide_begin_.assign(kColorCount + 1, 0);
+  // Lanes past the end of each colour's last batch: the still body, no mass, no impulse.
+  ContactConstraint padding;
+  padding.body_a = padding.body_b = still;
+  padding.nx = 1;
+  padding.mass_scale = 1;
   for (std::size_t c = 0; c < kColorCount; ++c) {
-    wide_begin_[c] = static_cast<std::uint32_t>(wide_.size());
-    for (std::uint32_t k = color_begin_[c]; k < color_begin_[c + 1]; k += 4) {
-      WideConstraint& w = wide_.emplace_back();
-      // Padding lanes: the still body, no mass, no impulse; they compute zeros.
-      const Wide zero = splat(0);
-      w.inv_mass_a = w.inv_inertia_a = w.inv_mass_b = w.inv_inertia_b = zero;
-      w.nx = splat(1);
-      w.ny = w.friction = w.restitution = w.bias_rate = w.impulse_scale = zero;
-      w.mass_scale = splat(1);
-      for (auto& p : w.points) {
-        p.ax = p.ay = p.bx = p.by = p.base_separation = p.normal_mass = p.tangent_mass =
-            p.normal_impulse = p.tangent_impulse = p.max_normal_impulse = p.relative_velocity =
-                zero;
-      }
-      for (int lane = 0; lane < 4; ++lane) {
-        w.body_a[lane] = w.body_b[lane] = still;
-        w.constraint[lane] = 0;
-      }
-      w.lanes = static_cast<int>(std::min<std::uint32_t>(4, color_begin_[c + 1] - k));
-      for (int lane = 0; lane < w.lanes; ++lane) {
-        const std::uint32_t index = order_[k + static_cast<std::uint32_t>(lane)];
-        pack(w, lane, constraints[index], index);
-      }
+    const std::uint32_t count = counts[c];
+    if (count % 4 == 0) continue;
+    WideConstraint& w = wide_[wide_begin_[c + 1] - 1];
+    for (int lane = static_cast<int>(count % 4); lane < 4; ++lane) pack(w, lane, padding, 0);
+  }
+  for (std::size_t c = 0; c < kColorCount; ++c) {
+    for (std::uint32_t k = wide_begin_[c]; k < wide_begin_[c + 1]; ++k) {
+      wide_[k].lanes = static_cast<int>(std::min<std::uint32_t>(
+          4, color_begin_[c + 1] - color_begin_[c] - 4 * (k - wide_begin_[c])));
     }
   }
-  wide_begin_[kColorCount] = static_cast<std::uint32_t>(wide_.size());
 }
 
 void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,

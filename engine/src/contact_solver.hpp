@@ -97,6 +97,7 @@ class ContactSolver {
   std::vector<WideConstraint> wide_;
   std::vector<std::uint32_t> wide_begin_;  // into wide_, per colour
   std::vector<std::uint64_t> color_bits_;
+  std::vector<std::uint8_t> color_of_;
 };
 
 }  // namespace mink::detail

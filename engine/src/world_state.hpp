@@ -16,28 +16,32 @@ namespace mink {
 
 namespace detail {
 
-struct Body {
+// What every step reads sits in the first two cache lines (pose, velocities, inverse masses,
+// solver index, flags); the rest is touched by the API and the sleep pass only.
+struct alignas(64) Body {
   // Pose: centre of mass and rotation are the state; the origin follows from them.
   Vec2 center{0, 0};
   Rotation rotation{};
   Vec2 origin{0, 0};
-  Vec2 local_center{0, 0};
   Vec2 velocity{0, 0};
   Real angular_velocity = 0;
-  Vec2 force{0, 0};
-  Real torque = 0;
-  Real mass = 0, inv_mass = 0, inertia = 0, inv_inertia = 0;
-  Real extent = 0;  // farthest shape vertex from the centre of mass
-  Real linear_damping = 0, angular_damping = 0, gravity_scale = 1;
-  Real sleep_time = 0;
-  std::uint64_t user_data = 0;
-  std::vector<std::uint32_t> shapes;
-  std::uint32_t generation = 0;
+  Real inv_mass = 0, inv_inertia = 0;
+  Real extent = 0;                 // farthest shape vertex from the centre of mass
   std::int32_t solver_index = -1;  // during a step
   BodyType type = BodyType::static_body;
   bool alive = false;
   bool awake = true;
   bool allow_sleep = true;
+
+  Vec2 local_center{0, 0};
+  Vec2 force{0, 0};
+  Real torque = 0;
+  Real mass = 0, inertia = 0;
+  Real linear_damping = 0, angular_damping = 0, gravity_scale = 1;
+  Real sleep_time = 0;
+  std::uint64_t user_data = 0;
+  std::vector<std::uint32_t> shapes;
+  std::uint32_t generation = 0;
 
   Pose pose() const { return {origin, rotation}; }
 };
