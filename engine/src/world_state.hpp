@@ -57,8 +57,20 @@ struct Shape {
   bool alive = false;
 };
 
+// Where a manifold was computed, so it can be carried along while the pair barely moves: the
+// pose of B in A's frame, the normal in A's frame, each point's surface points in their own
+// body's frame.
+struct ManifoldCache {
+  Real cos = 1, sin = 0, x = 0, y = 0;
+  Vec2 normal{0, 0};
+  Vec2 on_a[2] = {Vec2(0, 0), Vec2(0, 0)};
+  Vec2 on_b[2] = {Vec2(0, 0), Vec2(0, 0)};
+  bool valid = false;
+};
+
 struct Contact {
   Manifold manifold;
+  ManifoldCache cache;
   Real normal_impulse[2] = {0, 0};
   Real tangent_impulse[2] = {0, 0};
   Real friction = 0, restitution = 0;

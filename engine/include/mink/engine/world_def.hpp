@@ -34,6 +34,10 @@ struct WorldDef {
   // Solve independent contacts four at a time in SIMD lanes. false runs the same order one
   // contact at a time (the slow twin; results are bitwise equal).
   bool simd_solver = true;
+  // Keep a contact's manifold features while the pair's relative pose stays within a tenth of
+  // the linear slop of where they were found, updating only the separations. false runs the
+  // narrowphase for every pair every step.
+  bool reuse_manifolds = true;
 };
 
 }  // namespace mink
