@@ -55,11 +55,16 @@ struct WideConstraint {
   std::uint32_t constraint[4];  // scalar constraint per lane; lanes past `lanes` are padding
   int lanes = 0;
   Wide inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
-  Wide nx, ny, friction, restitution, bias_rate, mass_scale, impulse_scale;
+  Wide nx, ny, friction, bias_rate, mass_scale, impulse_scale;
+  Wide dx, dy;  // centre of A minus centre of B: anchor on B = anchor on A + (dx, dy)
   struct Point {
-    Wide ax, ay, bx, by, base_separation, normal_mass, tangent_mass, normal_impulse,
-        tangent_impulse, max_normal_impulse, relative_velocity;
+    Wide ax, ay, base_separation, normal_mass, tangent_mass, normal_impulse, tangent_impulse;
   } points[2];
+};
+
+// Per wide constraint, each point's largest single impulse of the step (restitution only).
+struct WideMaxImpulse {
+  Wide point[2];
 };
 
 namespace {
@@ -249,9 +254,21 @@ inline WideBody gather(const SolverBody* bodies, const std::int32_t* index) {
           Wide{b0.qs, b1.qs, b2.qs, b3.qs}};
 }
 
-// Only velocities change while solving. Lanes sharing the still body write back the same
-// zeros it holds (its masses are zero), so the order of those writes does not matter.
-inline void scatter(SolverBody* bodies, const std::int32_t* index, const WideBody& w) {
+struct WideVelocity {
+  Wide vx, vy, w;
+};
+
+inline WideVelocity gather_velocity(const SolverBody* bodies, const std::int32_t* index) {
+  const SolverBody& b0 = bodies[index[0]];
+  const SolverBody& b1 = bodies[index[1]];
+  const SolverBody& b2 = bodies[index[2]];
+  const SolverBody& b3 = bodies[index[3]];
+  return {Wide{b0.vx, b1.vx, b2.vx, b3.vx}, Wide{b0.vy, b1.vy, b2.vy, b3.vy},
+          Wide{b0.w, b1.w, b2.w, b3.w}};
+}
+
+template <typename State>
+inline void scatter(SolverBody* bodies, const std::int32_t* index, const State& w) {
   for (int lane = 0; lane < 4; ++lane) {
     SolverBody& b = bodies[index[lane]];
     b.vx = w.vx[lane];
@@ -260,21 +277,25 @@ inline void scatter(SolverBody* bodies, const std::int32_t* index, const WideBod
   }
 }
 
+// Only velocities change while solving. Lanes sharing the still body write back the same
+// zeros it holds (its masses are zero), so the order of those writes does not matter.
+
 __attribute__((target_clones("avx2", "default"))) void warm_start_wide(SolverBody* bodies,
                                                                        WideConstraint* begin,
                                                                        WideConstraint* end) {
   for (WideConstraint* c = begin; c != end; ++c) {
-    WideBody a = gather(bodies, c->body_a);
-    WideBody b = gather(bodies, c->body_b);
+    WideVelocity a = gather_velocity(bodies, c->body_a);
+    WideVelocity b = gather_velocity(bodies, c->body_b);
     const Wide tx = c->ny, ty = -c->nx;
     for (int j = 0; j < 2; ++j) {
       const WideConstraint::Point& p = c->points[j];
+      const Wide bx = p.ax + c->dx, by = p.ay + c->dy;
       const Wide px = p.normal_impulse * c->nx + p.tangent_impulse * tx;
       const Wide py = p.normal_impulse * c->ny + p.tangent_impulse * ty;
       a.w -= c->inv_inertia_a * (p.ax * py - p.ay * px);
       a.vx -= c->inv_mass_a * px;
       a.vy -= c->inv_mass_a * py;
-      b.w += c->inv_inertia_b * (p.bx * py - p.by * px);
+      b.w += c->inv_inertia_b * (bx * py - by * px);
       b.vx += c->inv_mass_b * px;
       b.vy += c->inv_mass_b * py;
     }
@@ -283,9 +304,12 @@ __attribute__((target_clones("avx2", "default"))) void warm_start_wide(SolverBod
   }
 }
 
-__attribute__((target_clones("avx2", "default"))) void solve_wide(
-    SolverBody* bodies, WideConstraint* begin, WideConstraint* end, Real inv_h_scalar,
-    Real max_push_scalar, bool use_bias) {
+// `Track` keeps each point's largest single impulse of the step for restitution; scenes
+// without restitution skip that store.
+template <bool Track>
+__attribute__((always_inline)) inline void solve_wide_impl(
+    SolverBody* bodies, WideConstraint* begin, WideConstraint* end, WideMaxImpulse* max_impulse,
+    Real inv_h_scalar, Real max_push_scalar, bool use_bias) {
   const Wide zero = splat(0), one = splat(1), inv_h = splat(inv_h_scalar),
              max_push = splat(-max_push_scalar);
   for (WideConstraint* c = begin; c != end; ++c) {
@@ -294,10 +318,14 @@ __attribute__((target_clones("avx2", "default"))) void solve_wide(
     const Wide ma = c->inv_mass_a, ia = c->inv_inertia_a, mb = c->inv_mass_b, ib = c->inv_inertia_b;
     const Wide dpx = b.dpx - a.dpx, dpy = b.dpy - a.dpy;
     const Wide nx = c->nx, ny = c->ny;
+    Wide bxs[2], bys[2];
     for (int j = 0; j < 2; ++j) {
       WideConstraint::Point& p = c->points[j];
+      const Wide bx = p.ax + c->dx, by = p.ay + c->dy;
+      bxs[j] = bx;
+      bys[j] = by;
       const Wide prax = a.qc * p.ax - a.qs * p.ay, pray = a.qs * p.ax + a.qc * p.ay;
-      const Wide prbx = b.qc * p.bx - b.qs * p.by, prby = b.qs * p.bx + b.qc * p.by;
+      const Wide prbx = b.qc * bx - b.qs * by, prby = b.qs * bx + b.qc * by;
       const Wide s = (dpx + prbx - prax) * nx + (dpy + prby - pray) * ny + p.base_separation;
       const auto speculative = s > zero;
       Wide bias = speculative ? s * inv_h : zero;
@@ -307,27 +335,31 @@ __attribute__((target_clones("avx2", "default"))) void solve_wide(
         mass_scale = speculative ? one : c->mass_scale;
         impulse_scale = speculative ? zero : c->impulse_scale;
       }
-      const Wide dvx = (b.vx - b.w * p.by) - (a.vx - a.w * p.ay);
-      const Wide dvy = (b.vy + b.w * p.bx) - (a.vy + a.w * p.ax);
+      const Wide dvx = (b.vx - b.w * by) - (a.vx - a.w * p.ay);
+      const Wide dvy = (b.vy + b.w * bx) - (a.vy + a.w * p.ax);
       const Wide vn = dvx * nx + dvy * ny;
       Wide impulse = -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
       const Wide accumulated = wmax(p.normal_impulse + impulse, zero);
       impulse = accumulated - p.normal_impulse;
       p.normal_impulse = accumulated;
-      p.max_normal_impulse = wmax(p.max_normal_impulse, impulse);
+      if constexpr (Track) {
+        Wide& m = max_impulse[c - begin].point[j];
+        m = wmax(m, impulse);
+      }
       const Wide px = impulse * nx, py = impulse * ny;
       a.vx -= ma * px;
       a.vy -= ma * py;
       a.w -= ia * (p.ax * py - p.ay * px);
       b.vx += mb * px;
       b.vy += mb * py;
-      b.w += ib * (p.bx * py - p.by * px);
+      b.w += ib * (bx * py - by * px);
     }
     const Wide tx = ny, ty = -nx;
     for (int j = 0; j < 2; ++j) {
       WideConstraint::Point& p = c->points[j];
-      const Wide dvx = (b.vx - b.w * p.by) - (a.vx - a.w * p.ay);
-      const Wide dvy = (b.vy + b.w * p.bx) - (a.vy + a.w * p.ax);
+      const Wide bx = bxs[j], by = bys[j];
+      const Wide dvx = (b.vx - b.w * by) - (a.vx - a.w * p.ay);
+      const Wide dvy = (b.vy + b.w * bx) - (a.vy + a.w * p.ax);
       const Wide vt = dvx * tx + dvy * ty;
       const Wide limit = c->friction * p.normal_impulse;
       const Wide accumulated = wmin(wmax(p.tangent_impulse - p.tangent_mass * vt, -limit), limit);
@@ -339,10 +371,20 @@ __attribute__((target_clones("avx2", "default"))) void solve_wide(
       a.w -= ia * (p.ax * py - p.ay * px);
       b.vx += mb * px;
       b.vy += mb * py;
-      b.w += ib * (p.bx * py - p.by * px);
+      b.w += ib * (bx * py - by * px);
     }
     scatter(bodies, c->body_a, a);
     scatter(bodies, c->body_b, b);
+  }
+}
+
+__attribute__((target_clones("avx2", "default"))) void solve_wide(
+    SolverBody* bodies, WideConstraint* begin, WideConstraint* end, WideMaxImpulse* max_impulse,
+    Real inv_h, Real max_push, bool use_bias) {
+  if (max_impulse) {
+    solve_wide_impl<true>(bodies, begin, end, max_impulse, inv_h, max_push, use_bias);
+  } else {
+    solve_wide_impl<false>(bodies, begin, end, nullptr, inv_h, max_push, use_bias);
   }
 }
 
@@ -357,34 +399,32 @@ void pack(WideConstraint& w, int lane, const ContactConstraint& c, std::uint32_t
   w.nx[lane] = c.nx;
   w.ny[lane] = c.ny;
   w.friction[lane] = c.friction;
-  w.restitution[lane] = c.restitution;
   w.bias_rate[lane] = c.bias_rate;
   w.mass_scale[lane] = c.mass_scale;
   w.impulse_scale[lane] = c.impulse_scale;
+  w.dx[lane] = c.dx;
+  w.dy[lane] = c.dy;
   for (int j = 0; j < 2; ++j) {
     const ContactConstraintPoint& p = c.points[j];
     WideConstraint::Point& q = w.points[j];
     q.ax[lane] = p.ax;
     q.ay[lane] = p.ay;
-    q.bx[lane] = p.bx;
-    q.by[lane] = p.by;
     q.base_separation[lane] = p.base_separation;
     q.normal_mass[lane] = p.normal_mass;
     q.tangent_mass[lane] = p.tangent_mass;
     q.normal_impulse[lane] = p.normal_impulse;
     q.tangent_impulse[lane] = p.tangent_impulse;
-    q.max_normal_impulse[lane] = p.max_normal_impulse;
-    q.relative_velocity[lane] = p.relative_velocity;
   }
 }
 
-void unpack(const WideConstraint& w, std::span<ContactConstraint> constraints) {
+void unpack(const WideConstraint& w, const WideMaxImpulse* max_impulse,
+            std::span<ContactConstraint> constraints) {
   for (int lane = 0; lane < w.lanes; ++lane) {
     ContactConstraint& c = constraints[w.constraint[lane]];
     for (int j = 0; j < 2; ++j) {
       c.points[j].normal_impulse = w.points[j].normal_impulse[lane];
       c.points[j].tangent_impulse = w.points[j].tangent_impulse[lane];
-      c.points[j].max_normal_impulse = w.points[j].max_normal_impulse[lane];
+      if (max_impulse) c.points[j].max_normal_impulse = max_impulse->point[j][lane];
     }
   }
 }
@@ -478,23 +518,31 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
                           bool wide) {
   SolverBody* body_data = bodies.data();
   WideConstraint* wide_data = wide_.data();
+  // Largest impulses are only needed when something bounces.
+  const bool track = std::any_of(constraints.begin(), constraints.end(),
+                                 [](const ContactConstraint& c) { return c.restitution > 0; });
+  max_impulse_.assign(track ? wide_.size() : 0, WideMaxImpulse{});
+  WideMaxImpulse* max_data = track ? max_impulse_.data() : nullptr;
   const auto each_scalar = [&](auto&& fn) {
     for (std::uint32_t index : order_) fn(constraints[index]);
     for (std::uint32_t index : overflow_) fn(constraints[index]);
   };
   const auto wide_pass = [&](auto&& fn) {
     for (std::size_t c = 0; c < kColorCount; ++c) {
-      fn(wide_data + wide_begin_[c], wide_data + wide_begin_[c + 1]);
+      fn(wide_data + wide_begin_[c], wide_data + wide_begin_[c + 1],
+         max_data ? max_data + wide_begin_[c] : nullptr);
     }
   };
   const Real inv_h = settings.inv_h, max_push = settings.contact_push_max_velocity;
   for (int substep = 0; substep < settings.substeps; ++substep) {
     integrate_velocities(bodies, params, settings);
     if (wide) {
-      wide_pass([&](WideConstraint* b, WideConstraint* e) { warm_start_wide(body_data, b, e); });
+      wide_pass([&](WideConstraint* b, WideConstraint* e, WideMaxImpulse*) {
+        warm_start_wide(body_data, b, e);
+      });
       for (std::uint32_t index : overflow_) warm_start_one(body_data, constraints[index]);
-      wide_pass([&](WideConstraint* b, WideConstraint* e) {
-        solve_wide(body_data, b, e, inv_h, max_push, true);
+      wide_pass([&](WideConstraint* b, WideConstraint* e, WideMaxImpulse* m) {
+        solve_wide(body_data, b, e, m, inv_h, max_push, true);
       });
       for (std::uint32_t index : overflow_) {
         solve_one(body_data, constraints[index], inv_h, max_push, true);
@@ -505,8 +553,8 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
     }
     integrate_positions(bodies, settings.h);
     if (wide) {
-      wide_pass([&](WideConstraint* b, WideConstraint* e) {
-        solve_wide(body_data, b, e, inv_h, max_push, false);
+      wide_pass([&](WideConstraint* b, WideConstraint* e, WideMaxImpulse* m) {
+        solve_wide(body_data, b, e, m, inv_h, max_push, false);
       });
       for (std::uint32_t index : overflow_) {
         solve_one(body_data, constraints[index], inv_h, max_push, false);
@@ -516,7 +564,9 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
     }
   }
   if (wide) {
-    for (const WideConstraint& w : wide_) unpack(w, constraints);
+    for (std::size_t k = 0; k < wide_.size(); ++k) {
+      unpack(wide_[k], max_data ? max_data + k : nullptr, constraints);
+    }
   }
   // Restitution is rare and once per step: one at a time, in colour order, for both paths.
   each_scalar(

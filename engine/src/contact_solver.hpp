@@ -39,6 +39,7 @@ struct ContactConstraint {
   std::uint32_t contact = 0;  // the contact record the impulses go back to
   Real inv_mass_a = 0, inv_inertia_a = 0, inv_mass_b = 0, inv_inertia_b = 0;
   Real nx = 0, ny = 0;
+  Real dx = 0, dy = 0;  // centre of A minus centre of B; anchor on B = anchor on A + (dx, dy)
   Real friction = 0, restitution = 0;
   Real bias_rate = 0, mass_scale = 1, impulse_scale = 0;  // contact softness
   ContactConstraintPoint points[2];
@@ -61,6 +62,7 @@ struct SolverSettings {
 
 // Four constraints side by side, one per lane, for the wide (SIMD) path.
 struct WideConstraint;
+struct WideMaxImpulse;
 
 // The soft-step solver over prepared arrays. prepare() colours the constraint graph: within
 // a colour no two constraints share a moving body, so a colour's constraints are independent
@@ -98,6 +100,7 @@ class ContactSolver {
   std::vector<std::uint32_t> wide_begin_;  // into wide_, per colour
   std::vector<std::uint64_t> color_bits_;
   std::vector<std::uint8_t> color_of_;
+  std::vector<WideMaxImpulse> max_impulse_;
 };
 
 }  // namespace mink::detail

@@ -329,6 +329,8 @@ void WorldState::prepare_contacts() {
     if (b.solver_index >= 0) k.inv_mass_b = b.inv_mass, k.inv_inertia_b = b.inv_inertia;
     k.nx = c.manifold.normal.x();
     k.ny = c.manifold.normal.y();
+    k.dx = a.center.x() - b.center.x();
+    k.dy = a.center.y() - b.center.y();
     k.friction = c.friction;
     k.restitution = c.restitution;
     const detail::Softness& s = (k.inv_mass_a == 0 || k.inv_mass_b == 0) ? static_soft : soft;
@@ -346,8 +348,9 @@ void WorldState::prepare_contacts() {
       detail::ContactConstraintPoint& p = k.points[j];
       p.ax = mp.point.x() - a.center.x();
       p.ay = mp.point.y() - a.center.y();
-      p.bx = mp.point.x() - b.center.x();
-      p.by = mp.point.y() - b.center.y();
+      // Through the centre offset, as the wide solver recomputes it (same bits).
+      p.bx = p.ax + k.dx;
+      p.by = p.ay + k.dy;
       p.base_separation = mp.separation - ((p.bx - p.ax) * k.nx + (p.by - p.ay) * k.ny);
       const Real rna = p.ax * k.ny - p.ay * k.nx;
       const Real rnb = p.bx * k.ny - p.by * k.nx;
