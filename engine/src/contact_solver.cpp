@@ -417,18 +417,6 @@ void pack(WideConstraint& w, int lane, const ContactConstraint& c, std::uint32_t
   }
 }
 
-void unpack(const WideConstraint& w, const WideMaxImpulse* max_impulse,
-            std::span<ContactConstraint> constraints) {
-  for (int lane = 0; lane < w.lanes; ++lane) {
-    ContactConstraint& c = constraints[w.constraint[lane]];
-    for (int j = 0; j < 2; ++j) {
-      c.points[j].normal_impulse = w.points[j].normal_impulse[lane];
-      c.points[j].tangent_impulse = w.points[j].tangent_impulse[lane];
-      if (max_impulse) c.points[j].max_normal_impulse = max_impulse->point[j][lane];
-    }
-  }
-}
-
 // Colours before giving up on a constraint (it then joins the one-at-a-time overflow).
 constexpr std::size_t kColorCount = 24;
 
@@ -447,17 +435,24 @@ std::size_t ContactSolver::color_count() const noexcept {
   return used;
 }
 
-void ContactSolver::prepare(std::span<const ContactConstraint> constraints, std::int32_t still,
-                            std::size_t body_count) {
+namespace {
+constexpr std::uint32_t kScalar = 1u << 31;
+}  // namespace
+
+void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::int32_t still,
+                          std::size_t body_count, bool wide) {
+  wide_mode_ = wide;
+  bouncy_ = false;
+  still_ = still;
+  restitution_.clear();
   // Greedy colouring in constraint order (deterministic): the first colour where neither
   // moving body is taken yet. The still body never blocks a colour.
   const std::size_t words = (body_count + 63) / 64;
   color_bits_.assign(kColorCount * words, 0);
   color_of_.resize(constraints.size());
   std::array<std::uint32_t, kColorCount + 1> counts{};
-  overflow_.clear();
   for (std::uint32_t i = 0; i < constraints.size(); ++i) {
-    const std::int32_t a = constraints[i].body_a, b = constraints[i].body_b;
+    const std::int32_t a = constraints[i].a, b = constraints[i].b;
     const std::uint64_t a_bit = a == still ? 0 : std::uint64_t{1} << (a & 63);
     const std::uint64_t b_bit = b == still ? 0 : std::uint64_t{1} << (b & 63);
     const std::size_t a_word = static_cast<std::size_t>(a) >> 6;
@@ -472,60 +467,100 @@ void ContactSolver::prepare(std::span<const ContactConstraint> constraints, std:
     }
     color_of_[i] = static_cast<std::uint8_t>(color);
     ++counts[color];
-    if (color == kColorCount) overflow_.push_back(i);
   }
-  color_begin_.assign(kColorCount + 1, 0);
+  overflow_count_ = counts[kColorCount];
+  color_begin_.assign(kColorCount + 2, 0);
   wide_begin_.assign(kColorCount + 1, 0);
+  for (std::size_t c = 0; c <= kColorCount; ++c) color_begin_[c + 1] = color_begin_[c] + counts[c];
   for (std::size_t c = 0; c < kColorCount; ++c) {
-    color_begin_[c + 1] = color_begin_[c] + counts[c];
     wide_begin_[c + 1] = wide_begin_[c] + (counts[c] + 3) / 4;
   }
-  order_.resize(color_begin_[kColorCount]);
-  wide_.resize(wide_begin_[kColorCount]);
-  std::array<std::uint32_t, kColorCount> fill{};
-  for (std::size_t c = 0; c < kColorCount; ++c) fill[c] = color_begin_[c];
+  // Slots: position within the colour gives the batch and the lane directly.
+  slot_.resize(constraints.size());
+  std::array<std::uint32_t, kColorCount + 1> fill{};
+  for (std::size_t c = 0; c <= kColorCount; ++c) fill[c] = color_begin_[c];
   for (std::uint32_t i = 0; i < constraints.size(); ++i) {
     const std::uint8_t color = color_of_[i];
-    if (color == kColorCount) continue;
-    // Position within the colour gives the batch and the lane directly.
-    const std::uint32_t k = fill[color]++;
-    order_[k] = i;
-    const std::uint32_t offset = k - color_begin_[color];
-    WideConstraint& w = wide_[wide_begin_[color] + offset / 4];
-    pack(w, static_cast<int>(offset % 4), constraints[i], i);
+    const std::uint32_t position = fill[color]++;
+    if (!wide) {
+      slot_[i] = position;
+    } else if (color == kColorCount) {
+      slot_[i] = kScalar | (position - color_begin_[kColorCount]);
+    } else {
+      const std::uint32_t offset = position - color_begin_[color];
+      slot_[i] = 4 * (wide_begin_[color] + offset / 4) + offset % 4;
+    }
   }
+  if (wide) {
+    scalar_.resize(overflow_count_);
+    wide_.resize(wide_begin_[kColorCount]);
+  } else {
+    scalar_.resize(constraints.size());
+    wide_.clear();
+  }
+}
+
+void ContactSolver::set(std::uint32_t index, const ContactConstraint& constraint) {
+  const std::uint32_t slot = slot_[index];
+  bouncy_ = bouncy_ || constraint.restitution > 0;
+  if (!wide_mode_) {
+    scalar_[slot] = constraint;
+  } else if (slot & kScalar) {
+    scalar_[slot & ~kScalar] = constraint;
+  } else {
+    pack(wide_[slot / 4], static_cast<int>(slot % 4), constraint, index);
+    if (constraint.restitution > 0) restitution_.emplace_back(slot, constraint);
+  }
+}
+
+void ContactSolver::finish() {
+  if (!wide_mode_) return;
   // Lanes past the end of each colour's last batch: the still body, no mass, no impulse.
   ContactConstraint padding;
-  padding.body_a = padding.body_b = still;
+  padding.body_a = padding.body_b = still_;
   padding.nx = 1;
   padding.mass_scale = 1;
   for (std::size_t c = 0; c < kColorCount; ++c) {
-    const std::uint32_t count = counts[c];
+    const std::uint32_t count = color_begin_[c + 1] - color_begin_[c];
+    for (std::uint32_t k = wide_begin_[c]; k < wide_begin_[c + 1]; ++k) {
+      wide_[k].lanes =
+          static_cast<int>(std::min<std::uint32_t>(4, count - 4 * (k - wide_begin_[c])));
+    }
     if (count % 4 == 0) continue;
     WideConstraint& w = wide_[wide_begin_[c + 1] - 1];
     for (int lane = static_cast<int>(count % 4); lane < 4; ++lane) pack(w, lane, padding, 0);
   }
-  for (std::size_t c = 0; c < kColorCount; ++c) {
-    for (std::uint32_t k = wide_begin_[c]; k < wide_begin_[c + 1]; ++k) {
-      wide_[k].lanes = static_cast<int>(std::min<std::uint32_t>(
-          4, color_begin_[c + 1] - color_begin_[c] - 4 * (k - wide_begin_[c])));
+  // Bounce in colour order, as the one-at-a-time twin does.
+  std::sort(restitution_.begin(), restitution_.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+}
+
+void ContactSolver::impulses(std::uint32_t index, Real normal[2], Real tangent[2]) const {
+  const std::uint32_t slot = slot_[index];
+  if (!wide_mode_ || (slot & kScalar)) {
+    const ContactConstraint& c = scalar_[wide_mode_ ? slot & ~kScalar : slot];
+    for (int j = 0; j < 2; ++j) {
+      normal[j] = c.points[j].normal_impulse;
+      tangent[j] = c.points[j].tangent_impulse;
     }
+    return;
+  }
+  const WideConstraint& w = wide_[slot / 4];
+  for (int j = 0; j < 2; ++j) {
+    normal[j] = w.points[j].normal_impulse[slot % 4];
+    tangent[j] = w.points[j].tangent_impulse[slot % 4];
   }
 }
 
 void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
-                          std::span<ContactConstraint> constraints, const SolverSettings& settings,
-                          bool wide) {
+                          const SolverSettings& settings) {
   SolverBody* body_data = bodies.data();
   WideConstraint* wide_data = wide_.data();
   // Largest impulses are only needed when something bounces.
-  const bool track = std::any_of(constraints.begin(), constraints.end(),
-                                 [](const ContactConstraint& c) { return c.restitution > 0; });
-  max_impulse_.assign(track ? wide_.size() : 0, WideMaxImpulse{});
-  WideMaxImpulse* max_data = track ? max_impulse_.data() : nullptr;
-  const auto each_scalar = [&](auto&& fn) {
-    for (std::uint32_t index : order_) fn(constraints[index]);
-    for (std::uint32_t index : overflow_) fn(constraints[index]);
+  max_impulse_.assign(bouncy_ && wide_mode_ ? wide_.size() : 0, WideMaxImpulse{});
+  WideMaxImpulse* max_data = max_impulse_.empty() ? nullptr : max_impulse_.data();
+  const auto scalar_pass = [&](auto&& fn) {
+    for (ContactConstraint& c : scalar_) fn(c);
   };
   const auto wide_pass = [&](auto&& fn) {
     for (std::size_t c = 0; c < kColorCount; ++c) {
@@ -536,41 +571,40 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
   const Real inv_h = settings.inv_h, max_push = settings.contact_push_max_velocity;
   for (int substep = 0; substep < settings.substeps; ++substep) {
     integrate_velocities(bodies, params, settings);
-    if (wide) {
+    if (wide_mode_) {
       wide_pass([&](WideConstraint* b, WideConstraint* e, WideMaxImpulse*) {
         warm_start_wide(body_data, b, e);
       });
-      for (std::uint32_t index : overflow_) warm_start_one(body_data, constraints[index]);
+    }
+    scalar_pass([&](ContactConstraint& c) { warm_start_one(body_data, c); });
+    if (wide_mode_) {
       wide_pass([&](WideConstraint* b, WideConstraint* e, WideMaxImpulse* m) {
         solve_wide(body_data, b, e, m, inv_h, max_push, true);
       });
-      for (std::uint32_t index : overflow_) {
-        solve_one(body_data, constraints[index], inv_h, max_push, true);
-      }
-    } else {
-      each_scalar([&](ContactConstraint& c) { warm_start_one(body_data, c); });
-      each_scalar([&](ContactConstraint& c) { solve_one(body_data, c, inv_h, max_push, true); });
     }
+    scalar_pass([&](ContactConstraint& c) { solve_one(body_data, c, inv_h, max_push, true); });
     integrate_positions(bodies, settings.h);
-    if (wide) {
+    if (wide_mode_) {
       wide_pass([&](WideConstraint* b, WideConstraint* e, WideMaxImpulse* m) {
         solve_wide(body_data, b, e, m, inv_h, max_push, false);
       });
-      for (std::uint32_t index : overflow_) {
-        solve_one(body_data, constraints[index], inv_h, max_push, false);
-      }
-    } else {
-      each_scalar([&](ContactConstraint& c) { solve_one(body_data, c, inv_h, max_push, false); });
     }
+    scalar_pass([&](ContactConstraint& c) { solve_one(body_data, c, inv_h, max_push, false); });
   }
-  if (wide) {
-    for (std::size_t k = 0; k < wide_.size(); ++k) {
-      unpack(wide_[k], max_data ? max_data + k : nullptr, constraints);
+  if (!bouncy_) return;
+  // Restitution, once per step and rare: one at a time, colours first, then the overflow.
+  const Real threshold = settings.restitution_threshold;
+  for (auto& [slot, c] : restitution_) {
+    WideConstraint& w = wide_[slot / 4];
+    const int lane = static_cast<int>(slot % 4);
+    for (int j = 0; j < 2; ++j) {
+      c.points[j].normal_impulse = w.points[j].normal_impulse[lane];
+      c.points[j].max_normal_impulse = max_data[slot / 4].point[j][lane];
     }
+    restitution_one(body_data, c, threshold);
+    for (int j = 0; j < 2; ++j) w.points[j].normal_impulse[lane] = c.points[j].normal_impulse;
   }
-  // Restitution is rare and once per step: one at a time, in colour order, for both paths.
-  each_scalar(
-      [&](ContactConstraint& c) { restitution_one(body_data, c, settings.restitution_threshold); });
+  scalar_pass([&](ContactConstraint& c) { restitution_one(body_data, c, threshold); });
 }
 
 }  // namespace mink::detail

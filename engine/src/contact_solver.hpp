@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "mink/geometry/types.hpp"
@@ -64,12 +65,17 @@ struct SolverSettings {
 struct WideConstraint;
 struct WideMaxImpulse;
 
-// The soft-step solver over prepared arrays. prepare() colours the constraint graph: within
-// a colour no two constraints share a moving body, so a colour's constraints are independent
-// and are solved four at a time in SIMD lanes (the rest, when the colours run out, one by
-// one after them). solve() runs every substep: integrate velocities, warm start, solve with
-// bias, integrate positions, relax without bias; then restitution. Impulses end up in the
-// scalar constraints for the caller to store.
+// The moving bodies of one constraint (indices into the solver body array).
+struct ConstraintBodies {
+  std::int32_t a = 0, b = 0;
+};
+
+// The soft-step solver. begin() colours the constraint graph: within a colour no two
+// constraints share a moving body, so a colour's constraints are independent and are solved
+// four at a time in SIMD lanes (those left when the colours run out, one at a time after
+// them). set() then writes each constraint straight into its lane, so the step never builds
+// a scalar copy of every constraint. solve() runs every substep: integrate velocities, warm
+// start, solve with bias, integrate positions, relax without bias; then restitution.
 class ContactSolver {
  public:
   ContactSolver();
@@ -80,27 +86,40 @@ class ContactSolver {
   ContactSolver& operator=(ContactSolver&&) noexcept;
 
   // `still` is the index of the body standing in for static and sleeping bodies; it may be
-  // shared by any number of constraints of one colour.
-  void prepare(std::span<const ContactConstraint> constraints, std::int32_t still,
-               std::size_t body_count);
-  // `wide` false runs the same colour order one constraint at a time: the slow twin the
-  // tests compare the SIMD path against (the results are bitwise equal).
+  // shared by any number of constraints of one colour. `wide` false keeps every constraint
+  // scalar and solves them one at a time in the same colour order: the slow twin the tests
+  // compare the SIMD path against (the results are bitwise equal).
+  void begin(std::span<const ConstraintBodies> constraints, std::int32_t still,
+             std::size_t body_count, bool wide);
+  // Constraint `index` (as passed to begin), once each, then finish().
+  void set(std::uint32_t index, const ContactConstraint& constraint);
+  void finish();
   void solve(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
-             std::span<ContactConstraint> constraints, const SolverSettings& settings,
-             bool wide = true);
+             const SolverSettings& settings);
+  // The accumulated impulses of constraint `index` after solve().
+  void impulses(std::uint32_t index, Real normal[2], Real tangent[2]) const;
 
   std::size_t color_count() const noexcept;
-  std::size_t overflow_count() const noexcept { return overflow_.size(); }
+  std::size_t overflow_count() const noexcept { return overflow_count_; }
 
  private:
-  std::vector<std::uint32_t> order_;        // colours concatenated
-  std::vector<std::uint32_t> color_begin_;  // into order_, one past the last colour at the end
-  std::vector<std::uint32_t> overflow_;
+  bool wide_mode_ = true;
+  bool bouncy_ = false;  // some constraint has restitution
+  std::int32_t still_ = 0;
+  std::size_t overflow_count_ = 0;
+  // Per constraint: where it lives. Wide mode: 4 * wide index + lane, or kScalar | index
+  // into scalar_ for the overflow. Scalar mode: index into scalar_ (colour order, then the
+  // overflow).
+  std::vector<std::uint32_t> slot_;
+  std::vector<ContactConstraint> scalar_;
+  std::vector<std::uint32_t> color_begin_;  // colour positions, one past the last at the end
   std::vector<WideConstraint> wide_;
   std::vector<std::uint32_t> wide_begin_;  // into wide_, per colour
   std::vector<std::uint64_t> color_bits_;
   std::vector<std::uint8_t> color_of_;
   std::vector<WideMaxImpulse> max_impulse_;
+  // Wide mode with restitution: scalar copies of the bouncing constraints, in colour order.
+  std::vector<std::pair<std::uint32_t, ContactConstraint>> restitution_;
 };
 
 }  // namespace mink::detail

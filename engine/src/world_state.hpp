@@ -116,7 +116,8 @@ struct WorldState {
   std::vector<detail::SolverBody> solver_bodies;
   std::vector<detail::SolverBodyParams> solver_params;
   std::vector<std::uint32_t> solver_to_body;
-  std::vector<detail::ContactConstraint> constraints;
+  std::vector<std::uint32_t> constraint_contacts;
+  std::vector<detail::ConstraintBodies> constraint_bodies;
   detail::ContactSolver contact_solver;
   std::int32_t still_index = 0;
   std::vector<std::uint32_t> island_parent;

@@ -314,14 +314,26 @@ void WorldState::prepare_contacts() {
   const detail::Softness static_soft =
       detail::make_softness(2 * contact_hertz, def.contact_damping_ratio, h);
 
-  constraints.clear();
+  // Which contacts become constraints, and between which solver bodies: the solver colours
+  // them first, then each constraint is built straight into its slot.
+  constraint_contacts.clear();
+  constraint_bodies.clear();
   for (std::uint32_t ci = 0; ci < contacts.size(); ++ci) {
     const Contact& c = contacts[ci];
     if (c.manifold.point_count == 0) continue;
+    const std::int32_t ia = bodies[c.body_a].solver_index, ib = bodies[c.body_b].solver_index;
+    if (ia < 0 && ib < 0) continue;
+    constraint_contacts.push_back(ci);
+    constraint_bodies.push_back({ia < 0 ? still : ia, ib < 0 ? still : ib});
+  }
+  contact_solver.begin(constraint_bodies, still, solver_bodies.size(), def.simd_solver);
+
+  for (std::uint32_t r = 0; r < constraint_contacts.size(); ++r) {
+    const std::uint32_t ci = constraint_contacts[r];
+    const Contact& c = contacts[ci];
     const Body& a = bodies[c.body_a];
     const Body& b = bodies[c.body_b];
-    if (a.solver_index < 0 && b.solver_index < 0) continue;
-    detail::ContactConstraint& k = constraints.emplace_back();
+    detail::ContactConstraint k;
     k.contact = ci;
     k.body_a = a.solver_index < 0 ? still : a.solver_index;
     k.body_b = b.solver_index < 0 ? still : b.solver_index;
@@ -369,9 +381,10 @@ void WorldState::prepare_contacts() {
       const Real dvy = (vb.y() + wb * p.bx) - (va.y() + wa * p.ax);
       p.relative_velocity = dvx * k.nx + dvy * k.ny;
     }
+    contact_solver.set(r, k);
   }
+  contact_solver.finish();
 
-  contact_solver.prepare(constraints, still_index, solver_bodies.size());
   counters.constraint_colors = contact_solver.color_count();
   counters.overflow_constraints = contact_solver.overflow_count();
 }
@@ -385,14 +398,11 @@ void WorldState::solve() {
   settings.contact_push_max_velocity = def.contact_push_max_velocity;
   settings.restitution_threshold = def.restitution_threshold;
   settings.substeps = def.substeps;
-  contact_solver.solve(solver_bodies, solver_params, constraints, settings, def.simd_solver);
+  contact_solver.solve(solver_bodies, solver_params, settings);
 
-  for (const detail::ContactConstraint& k : constraints) {
-    Contact& c = contacts[k.contact];
-    for (int j = 0; j < k.point_count; ++j) {
-      c.normal_impulse[j] = k.points[j].normal_impulse;
-      c.tangent_impulse[j] = k.points[j].tangent_impulse;
-    }
+  for (std::uint32_t r = 0; r < constraint_contacts.size(); ++r) {
+    Contact& c = contacts[constraint_contacts[r]];
+    contact_solver.impulses(r, c.normal_impulse, c.tangent_impulse);
   }
 
   // Write poses back: centre moved by dp, rotation composed with the step's rotation.
