@@ -19,6 +19,12 @@ struct SolverBody {
   Real pad = 0;
 };
 
+// What building constraints needs of a moving body, compactly.
+struct SolverBodyInfo {
+  Real cx = 0, cy = 0;  // centre of mass
+  Real inv_mass = 0, inv_inertia = 0;
+};
+
 // Per-substep velocity change from gravity and forces, and damping factors.
 struct SolverBodyParams {
   Real dvx = 0, dvy = 0, dw = 0;

@@ -68,16 +68,18 @@ struct ManifoldCache {
   bool valid = false;
 };
 
+// Ordered by use: what building constraints reads comes first, the manifold cache (collide
+// only) last.
 struct Contact {
   Manifold manifold;
-  ManifoldCache cache;
+  std::uint32_t body_a = 0, body_b = 0;
   Real normal_impulse[2] = {0, 0};
   Real tangent_impulse[2] = {0, 0};
   Real friction = 0, restitution = 0;
   std::uint32_t shape_a = 0, shape_b = 0;
-  std::uint32_t body_a = 0, body_b = 0;
   ProxyId proxy_a = null_proxy, proxy_b = null_proxy;
   bool touching = false;
+  ManifoldCache cache;
 };
 
 inline std::uint64_t pair_key(ProxyId a, ProxyId b) {
@@ -116,6 +118,8 @@ struct WorldState {
   std::vector<detail::SolverBody> solver_bodies;
   std::vector<detail::SolverBodyParams> solver_params;
   std::vector<std::uint32_t> solver_to_body;
+  std::vector<std::int32_t> body_solver_index;
+  std::vector<detail::SolverBodyInfo> solver_info;
   std::vector<std::uint32_t> constraint_contacts;
   std::vector<detail::ConstraintBodies> constraint_bodies;
   detail::ContactSolver contact_solver;

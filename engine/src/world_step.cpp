@@ -281,11 +281,16 @@ void WorldState::prepare_contacts() {
   solver_bodies.clear();
   solver_params.clear();
   solver_to_body.clear();
+  solver_info.clear();
+  body_solver_index.resize(bodies.size());
   for (std::uint32_t i = 0; i < bodies.size(); ++i) {
     Body& b = bodies[i];
     b.solver_index = -1;
+    body_solver_index[i] = -1;
     if (!b.alive || !moves(b)) continue;
     b.solver_index = static_cast<std::int32_t>(solver_bodies.size());
+    body_solver_index[i] = b.solver_index;
+    solver_info.push_back({b.center.x(), b.center.y(), b.inv_mass, b.inv_inertia});
     detail::SolverBody sb;
     sb.vx = b.velocity.x();
     sb.vy = b.velocity.y();
@@ -321,28 +326,35 @@ void WorldState::prepare_contacts() {
   for (std::uint32_t ci = 0; ci < contacts.size(); ++ci) {
     const Contact& c = contacts[ci];
     if (c.manifold.point_count == 0) continue;
-    const std::int32_t ia = bodies[c.body_a].solver_index, ib = bodies[c.body_b].solver_index;
+    const std::int32_t ia = body_solver_index[c.body_a], ib = body_solver_index[c.body_b];
     if (ia < 0 && ib < 0) continue;
     constraint_contacts.push_back(ci);
     constraint_bodies.push_back({ia < 0 ? still : ia, ib < 0 ? still : ib});
   }
   contact_solver.begin(constraint_bodies, still, solver_bodies.size(), def.simd_solver);
 
+  // Per-constraint body data comes from the compact solver arrays, not the body records.
+  const auto info = [&](std::uint32_t body, std::int32_t index) {
+    if (index >= 0) return solver_info[static_cast<std::size_t>(index)];
+    return detail::SolverBodyInfo{bodies[body].center.x(), bodies[body].center.y(), 0, 0};
+  };
+  detail::ContactConstraint k;
   for (std::uint32_t r = 0; r < constraint_contacts.size(); ++r) {
     const std::uint32_t ci = constraint_contacts[r];
     const Contact& c = contacts[ci];
-    const Body& a = bodies[c.body_a];
-    const Body& b = bodies[c.body_b];
-    detail::ContactConstraint k;
+    const std::int32_t ia = body_solver_index[c.body_a], ib = body_solver_index[c.body_b];
+    const detail::SolverBodyInfo a = info(c.body_a, ia), b = info(c.body_b, ib);
     k.contact = ci;
-    k.body_a = a.solver_index < 0 ? still : a.solver_index;
-    k.body_b = b.solver_index < 0 ? still : b.solver_index;
-    if (a.solver_index >= 0) k.inv_mass_a = a.inv_mass, k.inv_inertia_a = a.inv_inertia;
-    if (b.solver_index >= 0) k.inv_mass_b = b.inv_mass, k.inv_inertia_b = b.inv_inertia;
+    k.body_a = ia < 0 ? still : ia;
+    k.body_b = ib < 0 ? still : ib;
+    k.inv_mass_a = a.inv_mass;
+    k.inv_inertia_a = a.inv_inertia;
+    k.inv_mass_b = b.inv_mass;
+    k.inv_inertia_b = b.inv_inertia;
     k.nx = c.manifold.normal.x();
     k.ny = c.manifold.normal.y();
-    k.dx = a.center.x() - b.center.x();
-    k.dy = a.center.y() - b.center.y();
+    k.dx = a.cx - b.cx;
+    k.dy = a.cy - b.cy;
     k.friction = c.friction;
     k.restitution = c.restitution;
     const detail::Softness& s = (k.inv_mass_a == 0 || k.inv_mass_b == 0) ? static_soft : soft;
@@ -351,15 +363,14 @@ void WorldState::prepare_contacts() {
     k.impulse_scale = s.impulse_scale;
     k.point_count = c.manifold.point_count;
     const Real tx = k.ny, ty = -k.nx;
-    const Vec2 va = a.solver_index >= 0 ? a.velocity : Vec2(0, 0);
-    const Vec2 vb = b.solver_index >= 0 ? b.velocity : Vec2(0, 0);
-    const Real wa = a.solver_index >= 0 ? a.angular_velocity : 0;
-    const Real wb = b.solver_index >= 0 ? b.angular_velocity : 0;
+    const detail::SolverBody& sa = solver_bodies[static_cast<std::size_t>(k.body_a)];
+    const detail::SolverBody& sb = solver_bodies[static_cast<std::size_t>(k.body_b)];
+    if (k.point_count < 2) k.points[1] = detail::ContactConstraintPoint{};
     for (int j = 0; j < k.point_count; ++j) {
       const ManifoldPoint& mp = c.manifold.points[static_cast<std::size_t>(j)];
       detail::ContactConstraintPoint& p = k.points[j];
-      p.ax = mp.point.x() - a.center.x();
-      p.ay = mp.point.y() - a.center.y();
+      p.ax = mp.point.x() - a.cx;
+      p.ay = mp.point.y() - a.cy;
       // Through the centre offset, as the wide solver recomputes it (same bits).
       p.bx = p.ax + k.dx;
       p.by = p.ay + k.dy;
@@ -377,8 +388,8 @@ void WorldState::prepare_contacts() {
       p.normal_impulse = c.normal_impulse[j];
       p.tangent_impulse = c.tangent_impulse[j];
       p.max_normal_impulse = 0;
-      const Real dvx = (vb.x() - wb * p.by) - (va.x() - wa * p.ay);
-      const Real dvy = (vb.y() + wb * p.bx) - (va.y() + wa * p.ax);
+      const Real dvx = (sb.vx - sb.w * p.by) - (sa.vx - sa.w * p.ay);
+      const Real dvy = (sb.vy + sb.w * p.bx) - (sa.vy + sa.w * p.ax);
       p.relative_velocity = dvx * k.nx + dvy * k.ny;
     }
     contact_solver.set(r, k);
