@@ -3,8 +3,8 @@
 // Why this scheme. Sequential impulses with Baumgarte bias (Box2D 2.x) either jitter or pump
 // energy into deep stacks, and a separate position pass (2.x's NGS) costs as much as the
 // velocity pass while still leaving the stack bouncing. The soft step instead makes each
-// contact a stiff, heavily damped spring (30 Hz, damping ratio 10, capped at a quarter of the
-// substep rate) solved over several substeps of one step:
+// contact a stiff, heavily damped spring (damping ratio 10, stiffness capped at a quarter of
+// the substep rate) solved over several substeps of one step:
 //   per substep: integrate velocities, warm start with the accumulated impulses, one
 //   Gauss-Seidel pass with the soft bias ("solve"), integrate positions, one pass without the
 //   bias ("relax", so the push-out does not turn into bounce); restitution once at the end.
@@ -14,6 +14,12 @@
 // twice the stiffness (nothing on the other side to fight). Positive separations
 // (speculative points) use bias = s / h, which lets a body close the gap exactly in one
 // substep and no further: fast bodies stop at thin ones instead of tunnelling.
+//
+// Settings (WorldDef): 5 substeps and 60 Hz where Box2D v3 uses 4 and 30 Hz. A soft contact
+// under load sags by load / (effective mass * omega^2); at 30 Hz the bottom of the 100-row
+// pyramid compresses so much that the top sinks about a metre, at 60 Hz about 0.2 m. 60 Hz
+// with 4 substeps makes the pyramid sway (the spring is too stiff for the substep); 5 is
+// the fewest that stays steady.
 //
 // Speed: Gauss-Seidel is a chain of dependent updates, so one constraint at a time the CPU
 // mostly waits on latency. As in Box2D v3, the constraint graph is coloured so that no two

@@ -120,8 +120,8 @@ struct WorldState {
   std::vector<std::uint32_t> solver_to_body;
   std::vector<std::int32_t> body_solver_index;
   std::vector<detail::SolverBodyInfo> solver_info;
-  std::vector<std::uint32_t> constraint_contacts;
-  std::vector<detail::ConstraintBodies> constraint_bodies;
+  std::vector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
+  std::vector<detail::ConstraintBodies> constraint_bodies, sorted_bodies;
   detail::ContactSolver contact_solver;
   std::int32_t still_index = 0;
   std::vector<std::uint32_t> island_parent;

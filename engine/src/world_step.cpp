@@ -331,6 +331,26 @@ void WorldState::prepare_contacts() {
     constraint_contacts.push_back(ci);
     constraint_bodies.push_back({ia < 0 ? still : ia, ib < 0 ? still : ib});
   }
+  // Constraints in order of their first moving body (a stable counting sort): neighbouring
+  // constraints then touch neighbouring bodies and the solver's gathers stay in cache.
+  {
+    const std::size_t n = constraint_contacts.size();
+    sort_count.assign(solver_bodies.size() + 1, 0);
+    const auto key = [&](const detail::ConstraintBodies& cb) {
+      return static_cast<std::size_t>(cb.a == still ? cb.b : cb.a);
+    };
+    for (const detail::ConstraintBodies& cb : constraint_bodies) ++sort_count[key(cb) + 1];
+    for (std::size_t i = 1; i < sort_count.size(); ++i) sort_count[i] += sort_count[i - 1];
+    sorted_contacts.resize(n);
+    sorted_bodies.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t at = sort_count[key(constraint_bodies[i])]++;
+      sorted_contacts[at] = constraint_contacts[i];
+      sorted_bodies[at] = constraint_bodies[i];
+    }
+    constraint_contacts.swap(sorted_contacts);
+    constraint_bodies.swap(sorted_bodies);
+  }
   contact_solver.begin(constraint_bodies, still, solver_bodies.size(), def.simd_solver);
 
   // Per-constraint body data comes from the compact solver arrays, not the body records.
