@@ -155,6 +155,14 @@ void solve_one(SolverBody* bodies, ContactConstraint& c, Real inv_h, Real max_pu
   Real vax = a.vx, vay = a.vy, wa = a.w, vbx = b.vx, vby = b.vy, wb = b.w;
   const Real dpx = b.dpx - a.dpx, dpy = b.dpy - a.dpy;
   const Real nx = c.nx, ny = c.ny;
+  const auto apply = [&](const ContactConstraintPoint& p, Real px, Real py) {
+    vax -= ma * px;
+    vay -= ma * py;
+    wa -= ia * (p.ax * py - p.ay * px);
+    vbx += mb * px;
+    vby += mb * py;
+    wb += ib * (p.bx * py - p.by * px);
+  };
   for (int j = 0; j < 2; ++j) {
     ContactConstraintPoint& p = c.points[j];
     // Separation now: anchors moved with their bodies since the step began.
@@ -177,13 +185,7 @@ void solve_one(SolverBody* bodies, ContactConstraint& c, Real inv_h, Real max_pu
     impulse = accumulated - p.normal_impulse;
     p.normal_impulse = accumulated;
     p.max_normal_impulse = smax(p.max_normal_impulse, impulse);
-    const Real px = impulse * nx, py = impulse * ny;
-    vax -= ma * px;
-    vay -= ma * py;
-    wa -= ia * (p.ax * py - p.ay * px);
-    vbx += mb * px;
-    vby += mb * py;
-    wb += ib * (p.bx * py - p.by * px);
+    apply(p, impulse * nx, impulse * ny);
   }
   const Real tx = ny, ty = -nx;
   for (int j = 0; j < 2; ++j) {
@@ -195,13 +197,7 @@ void solve_one(SolverBody* bodies, ContactConstraint& c, Real inv_h, Real max_pu
     const Real accumulated = smin(smax(p.tangent_impulse - p.tangent_mass * vt, -limit), limit);
     const Real impulse = accumulated - p.tangent_impulse;
     p.tangent_impulse = accumulated;
-    const Real px = impulse * tx, py = impulse * ty;
-    vax -= ma * px;
-    vay -= ma * py;
-    wa -= ia * (p.ax * py - p.ay * px);
-    vbx += mb * px;
-    vby += mb * py;
-    wb += ib * (p.bx * py - p.by * px);
+    apply(p, impulse * tx, impulse * ty);
   }
   a.vx = vax, a.vy = vay, a.w = wa;
   b.vx = vbx, b.vy = vby, b.w = wb;
@@ -324,6 +320,14 @@ __attribute__((always_inline)) inline void solve_wide_impl(
     const Wide ma = c->inv_mass_a, ia = c->inv_inertia_a, mb = c->inv_mass_b, ib = c->inv_inertia_b;
     const Wide dpx = b.dpx - a.dpx, dpy = b.dpy - a.dpy;
     const Wide nx = c->nx, ny = c->ny;
+    const auto apply = [&](const WideConstraint::Point& p, Wide bx, Wide by, Wide px, Wide py) {
+      a.vx -= ma * px;
+      a.vy -= ma * py;
+      a.w -= ia * (p.ax * py - p.ay * px);
+      b.vx += mb * px;
+      b.vy += mb * py;
+      b.w += ib * (bx * py - by * px);
+    };
     Wide bxs[2], bys[2];
     for (int j = 0; j < 2; ++j) {
       WideConstraint::Point& p = c->points[j];
@@ -352,13 +356,7 @@ __attribute__((always_inline)) inline void solve_wide_impl(
         Wide& m = max_impulse[c - begin].point[j];
         m = wmax(m, impulse);
       }
-      const Wide px = impulse * nx, py = impulse * ny;
-      a.vx -= ma * px;
-      a.vy -= ma * py;
-      a.w -= ia * (p.ax * py - p.ay * px);
-      b.vx += mb * px;
-      b.vy += mb * py;
-      b.w += ib * (bx * py - by * px);
+      apply(p, bx, by, impulse * nx, impulse * ny);
     }
     const Wide tx = ny, ty = -nx;
     for (int j = 0; j < 2; ++j) {
@@ -371,13 +369,7 @@ __attribute__((always_inline)) inline void solve_wide_impl(
       const Wide accumulated = wmin(wmax(p.tangent_impulse - p.tangent_mass * vt, -limit), limit);
       const Wide impulse = accumulated - p.tangent_impulse;
       p.tangent_impulse = accumulated;
-      const Wide px = impulse * tx, py = impulse * ty;
-      a.vx -= ma * px;
-      a.vy -= ma * py;
-      a.w -= ia * (p.ax * py - p.ay * px);
-      b.vx += mb * px;
-      b.vy += mb * py;
-      b.w += ib * (bx * py - by * px);
+      apply(p, bx, by, impulse * tx, impulse * ty);
     }
     scatter(bodies, c->body_a, a);
     scatter(bodies, c->body_b, b);

@@ -36,23 +36,39 @@ bool hull_overlaps_box(const ConvexHull& hull, const Pose& pose, const Aabb& box
 
 }  // namespace
 
-std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
-  const WorldState& w = *state_;
-  std::vector<ProxyId> proxies;
-  w.broadphase.query(box, proxies);
-  std::vector<ShapeId> found;
+namespace {
+
+// The live shapes behind broadphase candidates (a destroyed shape's proxy lingers until the
+// next step), with their slot and pose.
+template <typename Visit>
+void for_each_candidate(const WorldState& w, const std::vector<ProxyId>& proxies, Visit&& visit) {
   for (ProxyId proxy : proxies) {
     const auto index = static_cast<std::uint32_t>(w.broadphase.user_data(proxy));
     if (index >= w.shapes.size()) continue;
     const detail::Shape& s = w.shapes[index];
     if (!s.alive || s.proxy != proxy) continue;
-    if (hull_overlaps_box(s.hull->hull(), w.bodies[s.body].pose(), box)) {
-      found.push_back(w.shape_id(index));
-    }
+    visit(index, s.hull->hull(), w.bodies[s.body].pose());
   }
+}
+
+std::vector<ShapeId> sorted_by_slot(std::vector<ShapeId> found) {
   std::sort(found.begin(), found.end(),
             [](const ShapeId& a, const ShapeId& b) { return a.index < b.index; });
   return found;
+}
+
+}  // namespace
+
+std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
+  const WorldState& w = *state_;
+  std::vector<ProxyId> proxies;
+  w.broadphase.query(box, proxies);
+  std::vector<ShapeId> found;
+  for_each_candidate(w, proxies,
+                     [&](std::uint32_t index, const ConvexHull& hull, const Pose& pose) {
+                       if (hull_overlaps_box(hull, pose, box)) found.push_back(w.shape_id(index));
+                     });
+  return sorted_by_slot(std::move(found));
 }
 
 std::vector<ShapeId> World::query_point(const Vec2& point) const {
@@ -60,18 +76,11 @@ std::vector<ShapeId> World::query_point(const Vec2& point) const {
   std::vector<ProxyId> proxies;
   w.broadphase.query_point(point, proxies);
   std::vector<ShapeId> found;
-  for (ProxyId proxy : proxies) {
-    const auto index = static_cast<std::uint32_t>(w.broadphase.user_data(proxy));
-    if (index >= w.shapes.size()) continue;
-    const detail::Shape& s = w.shapes[index];
-    if (!s.alive || s.proxy != proxy) continue;
-    if (hull_contains(s.hull->hull(), w.bodies[s.body].pose(), point)) {
-      found.push_back(w.shape_id(index));
-    }
-  }
-  std::sort(found.begin(), found.end(),
-            [](const ShapeId& a, const ShapeId& b) { return a.index < b.index; });
-  return found;
+  for_each_candidate(w, proxies,
+                     [&](std::uint32_t index, const ConvexHull& hull, const Pose& pose) {
+                       if (hull_contains(hull, pose, point)) found.push_back(w.shape_id(index));
+                     });
+  return sorted_by_slot(std::move(found));
 }
 
 std::optional<ShapeRayHit> World::ray_cast(const Vec2& origin, const Vec2& translation) const {
@@ -81,18 +90,15 @@ std::optional<ShapeRayHit> World::ray_cast(const Vec2& origin, const Vec2& trans
   std::vector<ProxyId> proxies;
   w.broadphase.query(box, proxies);
   std::optional<ShapeRayHit> best;
-  for (ProxyId proxy : proxies) {
-    const auto index = static_cast<std::uint32_t>(w.broadphase.user_data(proxy));
-    if (index >= w.shapes.size()) continue;
-    const detail::Shape& s = w.shapes[index];
-    if (!s.alive || s.proxy != proxy) continue;
-    const auto hit = ray_cast_hull(s.hull->hull(), w.bodies[s.body].pose(), origin, translation);
-    // Ties go to the lower slot so the answer does not depend on broadphase order.
-    if (hit && (!best || hit->fraction < best->hit.fraction ||
-                (hit->fraction == best->hit.fraction && index < best->shape.index))) {
-      best = ShapeRayHit{w.shape_id(index), *hit};
-    }
-  }
+  for_each_candidate(
+      w, proxies, [&](std::uint32_t index, const ConvexHull& hull, const Pose& pose) {
+        const auto hit = ray_cast_hull(hull, pose, origin, translation);
+        // Ties go to the lower slot so the answer does not depend on broadphase order.
+        if (hit && (!best || hit->fraction < best->hit.fraction ||
+                    (hit->fraction == best->hit.fraction && index < best->shape.index))) {
+          best = ShapeRayHit{w.shape_id(index), *hit};
+        }
+      });
   return best;
 }
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "mink/engine/scene.hpp"
+#include "test_worlds.hpp"
 
 namespace mink {
 namespace {
@@ -70,15 +71,8 @@ TEST(Determinism, SimdSolverMatchesItsScalarTwinBitForBit) {
 }
 
 TEST(Determinism, LargeStackSimdMatchesScalarTwin) {
-  SceneDef scene = pyramid_scene(20);
-  scene.world.enable_sleep = false;
-  World wide = build_world(scene);
-  scene.world.simd_solver = false;
-  World scalar = build_world(scene);
-  for (int i = 0; i < 120; ++i) {
-    wide.step();
-    scalar.step();
-  }
+  const auto [wide, scalar] =
+      test::stepped_twins(20, 120, [](WorldDef& def) { def.simd_solver = false; });
   EXPECT_EQ(state_hash(wide), state_hash(scalar));
 }
 

@@ -187,3 +187,45 @@ TEST(Queries, RayCastAgainstABoxHitsTheNearFace) {
 
 }  // namespace
 }  // namespace mink
+
+namespace mink {
+namespace {
+
+// Counts what World::draw reports, layer by layer.
+class CountingDraw : public DebugDraw {
+ public:
+  void draw_polygon(std::span<const Vec2> vertices, DrawColor, bool filled) override {
+    (filled ? filled_polygons : outlines) += 1;
+    vertex_count += vertices.size();
+  }
+  void draw_segment(const Vec2&, const Vec2&, DrawColor) override { ++segments; }
+  void draw_point(const Vec2&, float, DrawColor) override { ++points; }
+  void draw_circle(const Vec2&, Real, DrawColor) override {}
+  void draw_text(const Vec2&, std::string_view, DrawColor) override {}
+  int filled_polygons = 0, outlines = 0, segments = 0, points = 0;
+  std::size_t vertex_count = 0;
+};
+
+TEST(DebugDrawing, EachLayerReportsWhatTheWorldHolds) {
+  World world;
+  add_ground(world);
+  add_box(world, {0, 0.5});
+  add_box(world, {3, 0.5});
+  for (int i = 0; i < 10; ++i) world.step();
+  CountingDraw shapes_only;
+  world.draw(shapes_only);
+  EXPECT_EQ(shapes_only.filled_polygons, 3);
+  EXPECT_EQ(shapes_only.vertex_count, 12u);
+  EXPECT_EQ(shapes_only.segments + shapes_only.points + shapes_only.outlines, 0);
+  CountingDraw everything;
+  everything.flags = ~0u;
+  world.draw(everything);
+  EXPECT_EQ(everything.outlines, 3);  // one fat box per shape
+  // Two contacts of two points each, a normal per point, a pair segment per broadphase pair,
+  // a velocity segment per moving body, a centre of mass per moving body.
+  EXPECT_EQ(everything.points, 4 + 2);
+  EXPECT_EQ(everything.segments, 4 + static_cast<int>(world.counters().broadphase_pairs) + 2);
+}
+
+}  // namespace
+}  // namespace mink

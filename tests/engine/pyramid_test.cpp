@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mink/engine/scene.hpp"
+#include "test_worlds.hpp"
 
 namespace mink {
 namespace {
@@ -71,15 +72,8 @@ namespace {
 // Carrying manifolds along while pairs barely move must not change what the stack does:
 // against the full narrowphase every step, the same boxes end up within a millimetre.
 TEST(Pyramid, ManifoldReuseMatchesTheFullNarrowphase) {
-  SceneDef scene = pyramid_scene(15);
-  scene.world.enable_sleep = false;
-  World reused = build_world(scene);
-  scene.world.reuse_manifolds = false;
-  World full = build_world(scene);
-  for (int i = 0; i < 300; ++i) {
-    reused.step();
-    full.step();
-  }
+  const auto [reused, full] =
+      test::stepped_twins(15, 300, [](WorldDef& def) { def.reuse_manifolds = false; });
   const std::vector<BodyId> a = reused.bodies(), b = full.bodies();
   Real worst = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {

@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include <utility>
+
+#include "mink/engine/scene.hpp"
 #include "mink/engine/world.hpp"
 
 namespace mink::test {
@@ -34,6 +37,22 @@ inline bool finite_state(const World& world, BodyId id) {
   const Vec2 p = world.position(id), v = world.linear_velocity(id);
   return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(world.angle(id)) &&
          std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(world.angular_velocity(id));
+}
+
+// A pyramid of `base` boxes, sleeping off, built twice: as is and with `change` applied to
+// its world settings; both stepped `steps` times side by side.
+template <typename Change>
+std::pair<World, World> stepped_twins(int base, int steps, Change&& change) {
+  SceneDef scene = pyramid_scene(base);
+  scene.world.enable_sleep = false;
+  World first = build_world(scene);
+  change(scene.world);
+  World second = build_world(scene);
+  for (int i = 0; i < steps; ++i) {
+    first.step();
+    second.step();
+  }
+  return {std::move(first), std::move(second)};
 }
 
 }  // namespace mink::test
