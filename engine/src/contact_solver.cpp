@@ -427,7 +427,7 @@ ContactSolver& ContactSolver::operator=(ContactSolver&&) noexcept = default;
 
 std::size_t ContactSolver::color_count() const noexcept {
   std::size_t used = 0;
-  for (std::size_t c = 0; c + 1 < color_begin_.size(); ++c) {
+  for (std::size_t c = 0; c < kColorCount && c + 1 < color_begin_.size(); ++c) {
     used += color_begin_[c + 1] > color_begin_[c] ? 1 : 0;
   }
   return used;
@@ -444,15 +444,17 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
   still_ = still;
   restitution_.clear();
   // Greedy colouring in constraint order (deterministic): the first colour where neither
-  // moving body is taken yet. The still body never blocks a colour.
+  // moving body is taken yet. Bodies the solver cannot move never block a colour.
   const std::size_t words = (body_count + 63) / 64;
   color_bits_.assign(kColorCount * words, 0);
   color_of_.resize(constraints.size());
   std::array<std::uint32_t, kColorCount + 1> counts{};
   for (std::uint32_t i = 0; i < constraints.size(); ++i) {
     const std::int32_t a = constraints[i].a, b = constraints[i].b;
-    const std::uint64_t a_bit = a == still ? 0 : std::uint64_t{1} << (a & 63);
-    const std::uint64_t b_bit = b == still ? 0 : std::uint64_t{1} << (b & 63);
+    const bool a_fixed = a == still || constraints[i].a_fixed;
+    const bool b_fixed = b == still || constraints[i].b_fixed;
+    const std::uint64_t a_bit = a_fixed ? 0 : std::uint64_t{1} << (a & 63);
+    const std::uint64_t b_bit = b_fixed ? 0 : std::uint64_t{1} << (b & 63);
     const std::size_t a_word = static_cast<std::size_t>(a) >> 6;
     const std::size_t b_word = static_cast<std::size_t>(b) >> 6;
     std::size_t color = 0;

@@ -71,9 +71,12 @@ struct SolverSettings {
 struct WideConstraint;
 struct WideMaxImpulse;
 
-// The moving bodies of one constraint (indices into the solver body array).
+// The bodies of one constraint (indices into the solver body array), and whether the solver
+// can change each one's velocity (kinematic bodies and the still body it cannot: they never
+// block a colour, as several lanes writing back their unchanged velocity is harmless).
 struct ConstraintBodies {
   std::int32_t a = 0, b = 0;
+  bool a_fixed = false, b_fixed = false;
 };
 
 // The soft-step solver. begin() colours the constraint graph: within a colour no two

@@ -329,7 +329,9 @@ void WorldState::prepare_contacts() {
     const std::int32_t ia = body_solver_index[c.body_a], ib = body_solver_index[c.body_b];
     if (ia < 0 && ib < 0) continue;
     constraint_contacts.push_back(ci);
-    constraint_bodies.push_back({ia < 0 ? still : ia, ib < 0 ? still : ib});
+    constraint_bodies.push_back({ia < 0 ? still : ia, ib < 0 ? still : ib,
+                                 bodies[c.body_a].type != BodyType::dynamic,
+                                 bodies[c.body_b].type != BodyType::dynamic});
   }
   // Constraints in order of their first moving body (a stable counting sort): neighbouring
   // constraints then touch neighbouring bodies and the solver's gathers stay in cache.
