@@ -1,0 +1,134 @@
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "mink/geometry/types.hpp"
+
+namespace mink::detail {
+
+// Velocity state of one body during a step, as the soft-step solver sees it: velocities plus
+// the position and rotation change since the step began (so contact separations can be
+// updated every substep without recomputing manifolds). Plain doubles, one cache line.
+struct SolverBody {
+  Real vx = 0, vy = 0, w = 0;
+  Real dpx = 0, dpy = 0;
+  Real qc = 1, qs = 0;  // rotation since the step began
+  Real pad = 0;
+};
+
+// What building constraints needs of a moving body, compactly.
+struct SolverBodyInfo {
+  Real cx = 0, cy = 0;  // centre of mass
+  Real inv_mass = 0, inv_inertia = 0;
+};
+
+// Per-substep velocity change from gravity and forces, and damping factors.
+struct SolverBodyParams {
+  Real dvx = 0, dvy = 0, dw = 0;
+  Real linear_damping = 1, angular_damping = 1;  // factors 1 / (1 + h * damping)
+};
+
+struct ContactConstraintPoint {
+  Real ax = 0, ay = 0, bx = 0, by = 0;  // anchors from each centre of mass, fixed for the step
+  Real base_separation = 0;             // separation minus the anchors' offset along the normal
+  Real normal_mass = 0, tangent_mass = 0;
+  Real normal_impulse = 0, tangent_impulse = 0;
+  Real max_normal_impulse = 0;
+  Real relative_velocity = 0;  // normal approach speed when the step began (restitution)
+};
+
+struct ContactConstraint {
+  std::int32_t body_a = 0, body_b = 0;  // indices into the solver body array
+  std::int32_t point_count = 0;
+  std::uint32_t contact = 0;  // the contact record the impulses go back to
+  Real inv_mass_a = 0, inv_inertia_a = 0, inv_mass_b = 0, inv_inertia_b = 0;
+  Real nx = 0, ny = 0;
+  Real dx = 0, dy = 0;  // centre of A minus centre of B; anchor on B = anchor on A + (dx, dy)
+  Real friction = 0, restitution = 0;
+  Real bias_rate = 0, mass_scale = 1, impulse_scale = 0;  // contact softness
+  ContactConstraintPoint points[2];
+};
+
+// Spring softness of a constraint for a substep of length h (Box2D v3's soft step).
+struct Softness {
+  Real bias_rate = 0, mass_scale = 1, impulse_scale = 0;
+};
+Softness make_softness(Real hertz, Real damping_ratio, Real h);
+
+struct SolverSettings {
+  Real h = 0;  // substep length
+  Real inv_h = 0;
+  Real max_linear_speed = 0;
+  Real contact_push_max_velocity = 0;
+  Real restitution_threshold = 0;
+  int substeps = 1;
+};
+
+// Four constraints side by side, one per lane, for the wide (SIMD) path.
+struct WideConstraint;
+struct WideMaxImpulse;
+
+// The bodies of one constraint (indices into the solver body array), and whether the solver
+// can change each one's velocity (kinematic bodies and the still body it cannot: they never
+// block a colour, as several lanes writing back their unchanged velocity is harmless).
+struct ConstraintBodies {
+  std::int32_t a = 0, b = 0;
+  bool a_fixed = false, b_fixed = false;
+};
+
+// The soft-step solver. begin() colours the constraint graph: within a colour no two
+// constraints share a moving body, so a colour's constraints are independent and are solved
+// four at a time in SIMD lanes (those left when the colours run out, one at a time after
+// them). set() then writes each constraint straight into its lane, so the step never builds
+// a scalar copy of every constraint. solve() runs every substep: integrate velocities, warm
+// start, solve with bias, integrate positions, relax without bias; then restitution.
+class ContactSolver {
+ public:
+  ContactSolver();
+  ~ContactSolver();
+  ContactSolver(const ContactSolver&) = delete;
+  ContactSolver& operator=(const ContactSolver&) = delete;
+  ContactSolver(ContactSolver&&) noexcept;
+  ContactSolver& operator=(ContactSolver&&) noexcept;
+
+  // `still` is the index of the body standing in for static and sleeping bodies; it may be
+  // shared by any number of constraints of one colour. `wide` false keeps every constraint
+  // scalar and solves them one at a time in the same colour order: the slow twin the tests
+  // compare the SIMD path against (the results are bitwise equal).
+  void begin(std::span<const ConstraintBodies> constraints, std::int32_t still,
+             std::size_t body_count, bool wide);
+  // Constraint `index` (as passed to begin), once each, then finish().
+  void set(std::uint32_t index, const ContactConstraint& constraint);
+  void finish();
+  void solve(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
+             const SolverSettings& settings);
+  // The accumulated impulses of constraint `index` after solve().
+  void impulses(std::uint32_t index, Real normal[2], Real tangent[2]) const;
+
+  std::size_t color_count() const noexcept;
+  std::size_t overflow_count() const noexcept { return overflow_count_; }
+
+ private:
+  bool wide_mode_ = true;
+  bool bouncy_ = false;  // some constraint has restitution
+  std::int32_t still_ = 0;
+  std::size_t overflow_count_ = 0;
+  // Per constraint: where it lives. Wide mode: 4 * wide index + lane, or kScalar | index
+  // into scalar_ for the overflow. Scalar mode: index into scalar_ (colour order, then the
+  // overflow).
+  std::vector<std::uint32_t> slot_;
+  std::vector<ContactConstraint> scalar_;
+  std::vector<std::uint32_t> color_begin_;  // colour positions, one past the last at the end
+  std::vector<WideConstraint> wide_;
+  std::vector<std::uint32_t> wide_begin_;  // into wide_, per colour
+  std::vector<std::uint64_t> color_bits_;
+  std::vector<std::uint8_t> color_of_;
+  std::vector<WideMaxImpulse> max_impulse_;
+  // Wide mode with restitution: scalar copies of the bouncing constraints, in colour order.
+  std::vector<std::pair<std::uint32_t, ContactConstraint>> restitution_;
+};
+
+}  // namespace mink::detail

@@ -1,0 +1,165 @@
+// Queries and debug drawing: broadphase candidates, then exact tests against the hulls.
+
+#include <algorithm>
+#include <string>
+
+#include "world_state.hpp"
+
+namespace mink {
+
+namespace {
+
+// Separating-axis test of a posed hull against a box: the box axes and the hull's edge
+// normals are the only candidate axes for two convex polygons.
+bool hull_overlaps_box(const ConvexHull& hull, const Pose& pose, const Aabb& box) {
+  const auto local = hull.vertices();
+  std::vector<Vec2> world(local.size());
+  Aabb bounds{pose.apply(local[0]), pose.apply(local[0])};
+  for (std::size_t i = 0; i < local.size(); ++i) {
+    world[i] = pose.apply(local[i]);
+    bounds.lower = bounds.lower.cwiseMin(world[i]);
+    bounds.upper = bounds.upper.cwiseMax(world[i]);
+  }
+  if (!bounds.overlaps(box)) return false;
+  const Vec2 corners[4] = {box.lower, Vec2(box.upper.x(), box.lower.y()), box.upper,
+                           Vec2(box.lower.x(), box.upper.y())};
+  for (std::size_t i = 0; i < world.size(); ++i) {
+    const Vec2 edge = world[(i + 1) % world.size()] - world[i];
+    const Vec2 normal(edge.y(), -edge.x());
+    const Real limit = normal.dot(world[i]);
+    bool all_outside = true;
+    for (const Vec2& corner : corners) all_outside = all_outside && normal.dot(corner) > limit;
+    if (all_outside) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+namespace {
+
+// The live shapes behind broadphase candidates (a destroyed shape's proxy lingers until the
+// next step), with their slot and pose.
+template <typename Visit>
+void for_each_candidate(const WorldState& w, const std::vector<ProxyId>& proxies, Visit&& visit) {
+  for (ProxyId proxy : proxies) {
+    const auto index = static_cast<std::uint32_t>(w.broadphase.user_data(proxy));
+    if (index >= w.shapes.size()) continue;
+    const detail::Shape& s = w.shapes[index];
+    if (!s.alive || s.proxy != proxy) continue;
+    visit(index, s.hull->hull(), w.bodies[s.body].pose());
+  }
+}
+
+std::vector<ShapeId> sorted_by_slot(std::vector<ShapeId> found) {
+  std::sort(found.begin(), found.end(),
+            [](const ShapeId& a, const ShapeId& b) { return a.index < b.index; });
+  return found;
+}
+
+}  // namespace
+
+std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
+  const WorldState& w = *state_;
+  std::vector<ProxyId> proxies;
+  w.broadphase.query(box, proxies);
+  std::vector<ShapeId> found;
+  for_each_candidate(w, proxies,
+                     [&](std::uint32_t index, const ConvexHull& hull, const Pose& pose) {
+                       if (hull_overlaps_box(hull, pose, box)) found.push_back(w.shape_id(index));
+                     });
+  return sorted_by_slot(std::move(found));
+}
+
+std::vector<ShapeId> World::query_point(const Vec2& point) const {
+  const WorldState& w = *state_;
+  std::vector<ProxyId> proxies;
+  w.broadphase.query_point(point, proxies);
+  std::vector<ShapeId> found;
+  for_each_candidate(w, proxies,
+                     [&](std::uint32_t index, const ConvexHull& hull, const Pose& pose) {
+                       if (hull_contains(hull, pose, point)) found.push_back(w.shape_id(index));
+                     });
+  return sorted_by_slot(std::move(found));
+}
+
+std::optional<ShapeRayHit> World::ray_cast(const Vec2& origin, const Vec2& translation) const {
+  const WorldState& w = *state_;
+  const Vec2 end = origin + translation;
+  const Aabb box{origin.cwiseMin(end), origin.cwiseMax(end)};
+  std::vector<ProxyId> proxies;
+  w.broadphase.query(box, proxies);
+  std::optional<ShapeRayHit> best;
+  for_each_candidate(
+      w, proxies, [&](std::uint32_t index, const ConvexHull& hull, const Pose& pose) {
+        const auto hit = ray_cast_hull(hull, pose, origin, translation);
+        // Ties go to the lower slot so the answer does not depend on broadphase order.
+        if (hit && (!best || hit->fraction < best->hit.fraction ||
+                    (hit->fraction == best->hit.fraction && index < best->shape.index))) {
+          best = ShapeRayHit{w.shape_id(index), *hit};
+        }
+      });
+  return best;
+}
+
+void World::draw(DebugDraw& draw) const {
+  const WorldState& w = *state_;
+  const Color static_color{0.5f, 0.9f, 0.5f, 1}, kinematic_color{0.5f, 0.5f, 0.9f, 1},
+      dynamic_color{0.9f, 0.7f, 0.7f, 1}, sleeping_color{0.6f, 0.6f, 0.6f, 1},
+      aabb_color{0.9f, 0.3f, 0.9f, 1}, point_color{1, 0.2f, 0.2f, 1},
+      normal_color{0.9f, 0.9f, 0.3f, 1}, pair_color{0.3f, 0.9f, 0.9f, 1},
+      velocity_color{1, 1, 1, 1};
+  std::vector<Vec2> polygon;
+  if (draw.layers & draw_shapes) {
+    for (const detail::Shape& s : w.shapes) {
+      if (!s.alive) continue;
+      const detail::Body& b = w.bodies[s.body];
+      polygon.clear();
+      for (const Vec2& v : s.hull->vertices()) polygon.push_back(b.pose().apply(v));
+      Color color = b.type == BodyType::static_body ? static_color
+                        : b.type == BodyType::kinematic ? kinematic_color
+                                                        : dynamic_color;
+      if ((draw.layers & draw_sleep_state) && b.type == BodyType::dynamic && !b.awake) {
+        color = sleeping_color;
+      }
+      const Color outline{color.r * 0.6f, color.g * 0.6f, color.b * 0.6f, 1};
+      draw.draw_polygon(polygon, color, outline);
+    }
+  }
+  if (draw.layers & draw_aabbs) {
+    for (const detail::Shape& s : w.shapes) {
+      if (!s.alive) continue;
+      const Aabb& box = w.broadphase.fat_aabb(s.proxy);
+      const Vec2 corners[4] = {box.lower, Vec2(box.upper.x(), box.lower.y()), box.upper,
+                               Vec2(box.lower.x(), box.upper.y())};
+      draw.draw_polygon(corners, Color{0, 0, 0, 0}, aabb_color);
+    }
+  }
+  if (draw.layers & draw_broadphase_pairs) {
+    for (const ProxyPair& pair : w.broadphase.pairs()) {
+      const Aabb& a = w.broadphase.fat_aabb(pair.a);
+      const Aabb& b = w.broadphase.fat_aabb(pair.b);
+      draw.draw_segment((a.lower + a.upper) / 2, (b.lower + b.upper) / 2, pair_color);
+    }
+  }
+  if (draw.layers & (draw_contact_points | draw_contact_normals)) {
+    for (const detail::Contact& c : w.contacts) {
+      for (int j = 0; j < c.manifold.point_count; ++j) {
+        const Vec2& p = c.manifold.points[static_cast<std::size_t>(j)].point;
+        if (draw.layers & draw_contact_points) draw.draw_point(p, 4, point_color);
+        if (draw.layers & draw_contact_normals) {
+          draw.draw_segment(p, p + 0.3 * c.manifold.normal, normal_color);
+        }
+      }
+    }
+  }
+  for (const detail::Body& b : w.bodies) {
+    if (!b.alive || b.type == BodyType::static_body) continue;
+    if (draw.layers & draw_velocities) {
+      draw.draw_segment(b.center, b.center + w.def.time_step * 10 * b.velocity, velocity_color);
+    }
+    if (draw.layers & draw_centers_of_mass) draw.draw_point(b.center, 3, velocity_color);
+  }
+}
+
+}  // namespace mink

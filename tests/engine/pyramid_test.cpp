@@ -1,0 +1,86 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "mink/engine/scene.hpp"
+#include "test_worlds.hpp"
+
+namespace mink {
+namespace {
+
+struct Start {
+  BodyId id;
+  Vec2 position;
+};
+
+std::vector<Start> dynamic_bodies(const World& world) {
+  std::vector<Start> starts;
+  for (const BodyId id : world.bodies()) {
+    if (world.body_type(id) == BodyType::dynamic) starts.push_back({id, world.position(id)});
+  }
+  return starts;
+}
+
+const Start& top_box(const std::vector<Start>& starts) {
+  return *std::max_element(starts.begin(), starts.end(), [](const Start& a, const Start& b) {
+    return a.position.y() < b.position.y();
+  });
+}
+
+TEST(Pyramid, TwentyRowsStandAfterTenSeconds) {
+  World world = build_world(builtin_scene("pyramid"));
+  const std::vector<Start> starts = dynamic_bodies(world);
+  ASSERT_EQ(starts.size(), 210u);
+  const Start& top = top_box(starts);
+  const int steps = static_cast<int>(std::lround(10 / world.def().time_step));
+  for (int i = 0; i < steps; ++i) world.step();
+  Real worst_sideways = 0;
+  for (const Start& s : starts) {
+    worst_sideways = std::max(worst_sideways, std::abs(world.position(s.id).x() - s.position.x()));
+  }
+  EXPECT_LT(worst_sideways, 0.1);
+  // The top box's height (its centre above the ground) within 1%.
+  const Real height = top.position.y();
+  EXPECT_NEAR(world.position(top.id).y(), height, 0.01 * height);
+}
+
+// The benchmark scene: 5050 boxes, 500 steps with sleeping off; the top box stays within 0.3
+// of where it started. Heavy, so shrunk to a 40-box base under the sanitizers.
+TEST(Pyramid, LargePyramidStandsAfterFiveHundredSteps) {
+#ifdef MINK_SANITIZED_BUILD
+  SceneDef scene = pyramid_scene(40);
+#else
+  SceneDef scene = builtin_scene("large_pyramid");
+#endif
+  scene.world.enable_sleep = false;
+  World world = build_world(scene);
+  const std::vector<Start> starts = dynamic_bodies(world);
+  const Start& top = top_box(starts);
+  for (int i = 0; i < 500; ++i) world.step();
+  EXPECT_LT((world.position(top.id) - top.position).norm(), 0.3);
+  EXPECT_GT(world.counters().touching_contacts, starts.size());
+}
+
+}  // namespace
+}  // namespace mink
+
+namespace mink {
+namespace {
+
+// Carrying manifolds along while pairs barely move must not change what the stack does:
+// against the full narrowphase every step, the same boxes end up within a millimetre.
+TEST(Pyramid, ManifoldReuseMatchesTheFullNarrowphase) {
+  const auto [reused, full] =
+      test::stepped_twins(15, 300, [](WorldDef& def) { def.reuse_manifolds = false; });
+  const std::vector<BodyId> a = reused.bodies(), b = full.bodies();
+  Real worst = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    worst = std::max(worst, (reused.position(a[i]) - full.position(b[i])).norm());
+  }
+  EXPECT_LT(worst, 1e-3);
+}
+
+}  // namespace
+}  // namespace mink

@@ -1,0 +1,107 @@
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "test_worlds.hpp"
+
+namespace mink {
+namespace {
+
+using test::add_box;
+using test::add_ground;
+
+std::vector<BodyId> stack(World& world, int height, Real x = 0) {
+  std::vector<BodyId> boxes;
+  for (int i = 0; i < height; ++i) boxes.push_back(add_box(world, {x, 0.5 + i}));
+  return boxes;
+}
+
+TEST(Sleep, ARestingStackSleepsAsOneIslandAndStopsMoving) {
+  World world;
+  add_ground(world);
+  const std::vector<BodyId> boxes = stack(world, 5);
+  for (int i = 0; i < 180; ++i) world.step();
+  for (const BodyId b : boxes) EXPECT_FALSE(world.is_awake(b));
+  EXPECT_EQ(world.counters().awake_bodies, 0u);
+  EXPECT_EQ(world.counters().islands, 0u);
+  const Vec2 before = world.position(boxes.back());
+  for (int i = 0; i < 60; ++i) world.step();
+  EXPECT_EQ(world.position(boxes.back()), before);  // asleep: not integrated at all
+}
+
+TEST(Sleep, TouchingThroughTheApiWakesTheWholeIsland) {
+  World world;
+  add_ground(world);
+  const std::vector<BodyId> boxes = stack(world, 4);
+  const std::vector<BodyId> other = stack(world, 2, 5);
+  for (int i = 0; i < 180; ++i) world.step();
+  ASSERT_FALSE(world.is_awake(boxes[0]));
+  world.apply_linear_impulse(boxes[3], Vec2(0.5, 0), world.world_center(boxes[3]));
+  EXPECT_TRUE(world.is_awake(boxes[3]));
+  world.step();
+  for (const BodyId b : boxes) EXPECT_TRUE(world.is_awake(b));
+  for (const BodyId b : other) EXPECT_FALSE(world.is_awake(b));  // a separate island
+  EXPECT_EQ(world.counters().islands, 1u);
+}
+
+TEST(Sleep, AnAwakeBodyHittingASleepingStackWakesIt) {
+  World world;
+  add_ground(world);
+  const std::vector<BodyId> boxes = stack(world, 3);
+  for (int i = 0; i < 180; ++i) world.step();
+  ASSERT_FALSE(world.is_awake(boxes[0]));
+  const BodyId falling = add_box(world, {0.3, 6});
+  bool woke = false;
+  for (int i = 0; i < 120 && !woke; ++i) {
+    world.step();
+    woke = world.is_awake(boxes[0]);
+  }
+  EXPECT_TRUE(woke);
+  EXPECT_TRUE(world.is_valid(falling));
+}
+
+TEST(Sleep, SleepingOffKeepsEveryBodyAwake) {
+  WorldDef def;
+  def.enable_sleep = false;
+  World world(def);
+  add_ground(world);
+  const std::vector<BodyId> boxes = stack(world, 3);
+  for (int i = 0; i < 180; ++i) world.step();
+  for (const BodyId b : boxes) EXPECT_TRUE(world.is_awake(b));
+  EXPECT_EQ(world.counters().awake_bodies, 3u);
+}
+
+TEST(Sleep, BodiesThatMayNotSleepKeepTheirIslandAwake) {
+  World world;
+  add_ground(world);
+  const std::vector<BodyId> boxes = stack(world, 2);
+  BodyDef def;
+  def.type = BodyType::dynamic;
+  def.position = Vec2(0, 2.5);
+  def.allow_sleep = false;
+  const BodyId restless = world.create_body(def);
+  world.create_shape(restless, ShapeDef::box(0.5, 0.5));
+  for (int i = 0; i < 180; ++i) world.step();
+  EXPECT_TRUE(world.is_awake(restless));
+  EXPECT_TRUE(world.is_awake(boxes[0]));
+}
+
+TEST(Sleep, PuttingABodyToSleepThroughTheApi) {
+  WorldDef def;
+  def.gravity = Vec2(0, 0);
+  World world(def);
+  const BodyId box = add_box(world, {0, 0});
+  world.set_linear_velocity(box, Vec2(1, 0));
+  world.set_awake(box, false);
+  EXPECT_FALSE(world.is_awake(box));
+  EXPECT_EQ(world.linear_velocity(box), Vec2(0, 0));
+  world.step();
+  EXPECT_EQ(world.position(box), Vec2(0, 0));
+  world.set_awake(box, true);
+  world.set_linear_velocity(box, Vec2(1, 0));
+  world.step();
+  EXPECT_GT(world.position(box).x(), 0);
+}
+
+}  // namespace
+}  // namespace mink

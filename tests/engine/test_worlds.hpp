@@ -1,0 +1,58 @@
+#pragma once
+
+#include <cmath>
+
+#include <utility>
+
+#include "mink/engine/scene.hpp"
+#include "mink/engine/world.hpp"
+
+namespace mink::test {
+
+// A static ground box whose top face is y = 0.
+inline BodyId add_ground(World& world, Real half_width = 50, Real friction = 0.6) {
+  const BodyId ground = world.create_body({});
+  ShapeDef shape = ShapeDef::box(half_width, 1, Vec2(0, -1));
+  shape.friction = friction;
+  world.create_shape(ground, shape);
+  return ground;
+}
+
+inline BodyId add_box(World& world, const Vec2& position, Real half = 0.5, Real angle = 0,
+                      Real friction = 0.6, Real restitution = 0, Real density = 1) {
+  BodyDef def;
+  def.type = BodyType::dynamic;
+  def.position = position;
+  def.angle = angle;
+  const BodyId body = world.create_body(def);
+  ShapeDef shape = ShapeDef::box(half, half);
+  shape.friction = friction;
+  shape.restitution = restitution;
+  shape.density = density;
+  world.create_shape(body, shape);
+  return body;
+}
+
+inline bool finite_state(const World& world, BodyId id) {
+  const Vec2 p = world.position(id), v = world.linear_velocity(id);
+  return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(world.angle(id)) &&
+         std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(world.angular_velocity(id));
+}
+
+// A pyramid of `base` boxes, sleeping off, built twice: as is and with `change` applied to
+// its world settings; both stepped `steps` times side by side.
+template <typename Change>
+std::pair<World, World> stepped_twins(int base, int steps, Change&& change) {
+  SceneDef scene = pyramid_scene(base);
+  scene.world.enable_sleep = false;
+  World first = build_world(scene);
+  change(scene.world);
+  World second = build_world(scene);
+  for (int i = 0; i < steps; ++i) {
+    first.step();
+    second.step();
+  }
+  return {std::move(first), std::move(second)};
+}
+
+}  // namespace mink::test
