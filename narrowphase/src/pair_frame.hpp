@@ -1,11 +1,27 @@
 #pragma once
 
+#include <array>
+#include <cmath>
+
 #include "mink/narrowphase/pose.hpp"
 #include "mink/narrowphase/prepared_hull.hpp"
 #include "mink/narrowphase/simplex.hpp"
 #include "mink/narrowphase/support.hpp"
 
 namespace mink::detail {
+
+// A support point of A - B in A's frame with the vertex pair it came from: all the loops
+// carry. The hull vertices themselves are looked up from the indices when needed.
+struct LocalVertex {
+  Vec2 point{0, 0};
+  std::uint32_t index_a = 0;
+  std::uint32_t index_b = 0;
+};
+
+struct LocalSimplex {
+  std::array<LocalVertex, 3> vertices{};
+  int count = 0;
+};
 
 // A hull pair seen from A's local frame: B's vertices are mapped by one relative transform,
 // so A's support needs no transform at all and B's costs one rotation of the direction.
@@ -27,18 +43,12 @@ class PairFrame {
 
   Vec2 b_vertex(std::size_t i) const { return relative_.apply(b_.vertices()[i]); }
 
-  SimplexVertex vertex(std::uint32_t ia, std::uint32_t ib) const {
-    SimplexVertex v;
-    v.index_a = ia;
-    v.index_b = ib;
-    v.a = a_.vertices()[ia];
-    v.b = b_vertex(ib);
-    v.point = v.a - v.b;
-    return v;
+  LocalVertex vertex(std::uint32_t ia, std::uint32_t ib) const {
+    return {a_.vertices()[ia] - b_vertex(ib), ia, ib};
   }
 
   // Support point of A - B along d (A's frame): eq. 4 of the paper.
-  SimplexVertex support(const Vec2& d) const {
+  LocalVertex support(const Vec2& d) const {
     const auto ia = static_cast<std::uint32_t>(support_index(a_, d));
     const auto ib =
         static_cast<std::uint32_t>(support_index(b_, relative_.rotation.apply_inverse(-d)));
@@ -46,7 +56,7 @@ class PairFrame {
   }
 
   // The vertex pairs of a simplex.
-  static SimplexCache indices(const Simplex& s) {
+  static SimplexCache indices(const LocalSimplex& s) {
     SimplexCache c;
     c.count = s.count;
     for (int i = 0; i < s.count; ++i) {

@@ -36,6 +36,10 @@ PreparedHull::PreparedHull(ConvexHull hull) : hull_(std::move(hull)) {
     angles[i] = pseudo_angle(normals_[i]);
     radius_ = std::max(radius_, std::hypot(v[i].x() - centroid_.x(), v[i].y() - centroid_.y()));
   }
+  for (std::size_t i = 0; i < n + n % 2; ++i) {
+    xs_.push_back(v[i < n ? i : 0].x());
+    ys_.push_back(v[i < n ? i : 0].y());
+  }
   first_normal_ =
       static_cast<std::size_t>(std::min_element(angles.begin(), angles.end()) - angles.begin());
   sorted_angles_.reserve(n);

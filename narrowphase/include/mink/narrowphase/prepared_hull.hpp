@@ -31,12 +31,20 @@ class PreparedHull {
   std::span<const Real> sorted_normal_angles() const noexcept { return sorted_angles_; }
   std::size_t first_normal() const noexcept { return first_normal_; }
 
+  // The vertices' x and y in separate arrays padded to an even length with copies of vertex
+  // 0, so the linear support scan can work on two vertices per instruction.
+  const Real* xs() const noexcept { return xs_.data(); }
+  const Real* ys() const noexcept { return ys_.data(); }
+  std::size_t padded_size() const noexcept { return xs_.size(); }
+
  private:
   ConvexHull hull_;
   Vec2 centroid_{0, 0};
   std::vector<Vec2> normals_;
   std::vector<Real> sorted_angles_;
   std::size_t first_normal_ = 0;
+  std::vector<Real> xs_;
+  std::vector<Real> ys_;
   Real radius_ = 0;
 };
 
