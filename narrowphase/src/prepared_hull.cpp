@@ -36,7 +36,7 @@ PreparedHull::PreparedHull(ConvexHull hull) : hull_(std::move(hull)) {
     angles[i] = pseudo_angle(normals_[i]);
     radius_ = std::max(radius_, std::hypot(v[i].x() - centroid_.x(), v[i].y() - centroid_.y()));
   }
-  for (std::size_t i = 0; i < n + n % 2; ++i) {
+  for (std::size_t i = 0; i < std::max<std::size_t>(kSupportBlock, n + n % 2); ++i) {
     xs_.push_back(v[i < n ? i : 0].x());
     ys_.push_back(v[i < n ? i : 0].y());
   }

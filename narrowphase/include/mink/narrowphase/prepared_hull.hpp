@@ -11,6 +11,8 @@ namespace mink {
 
 // A hull in its shape's local frame, with what queries need precomputed once at shape
 // creation (centroid, edge normals, search structures for large vertex counts).
+inline constexpr std::size_t kSupportBlock = 8;
+
 class PreparedHull {
  public:
   explicit PreparedHull(ConvexHull hull);
@@ -31,8 +33,9 @@ class PreparedHull {
   std::span<const Real> sorted_normal_angles() const noexcept { return sorted_angles_; }
   std::size_t first_normal() const noexcept { return first_normal_; }
 
-  // The vertices' x and y in separate arrays padded to an even length with copies of vertex
-  // 0, so the linear support scan can work on two vertices per instruction.
+  // The vertices' x and y in separate arrays padded with copies of vertex 0 to an even length
+  // of at least kSupportBlock, so the linear support scan works on two vertices per
+  // instruction and on small hulls as one fixed block with no loop.
   const Real* xs() const noexcept { return xs_.data(); }
   const Real* ys() const noexcept { return ys_.data(); }
   std::size_t padded_size() const noexcept { return xs_.size(); }

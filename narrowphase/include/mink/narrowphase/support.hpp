@@ -1,6 +1,8 @@
 #pragma once
 
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -33,9 +35,32 @@ inline std::size_t support_index_linear(const PreparedHull& hull, const Vec2& di
   auto values = [&](std::size_t i) {
     return _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(xs + i), dx), _mm_mul_pd(_mm_loadu_pd(ys + i), dy));
   };
+  if (n == kSupportBlock) {
+    // Up to 8 vertices (boxes, Box2D-sized polygons): one straight block.
+    const __m128d v0 = values(0);
+    const __m128d v1 = values(2);
+    const __m128d v2 = values(4);
+    const __m128d v3 = values(6);
+    __m128d top = _mm_max_pd(_mm_max_pd(v0, v1), _mm_max_pd(v2, v3));
+    top = _mm_max_pd(top, _mm_shuffle_pd(top, top, 1));
+    const int reached = _mm_movemask_pd(_mm_cmpeq_pd(v0, top)) |
+                        (_mm_movemask_pd(_mm_cmpeq_pd(v1, top)) << 2) |
+                        (_mm_movemask_pd(_mm_cmpeq_pd(v2, top)) << 4) |
+                        (_mm_movemask_pd(_mm_cmpeq_pd(v3, top)) << 6);
+    return static_cast<std::size_t>(std::countr_zero(static_cast<unsigned>(reached)));
+  }
   __m128d best = values(0);
   for (std::size_t i = 2; i < n; i += 2) best = _mm_max_pd(best, values(i));
   best = _mm_max_pd(best, _mm_shuffle_pd(best, best, 1));
+  if (n <= 64) {
+    // Which vertices reach the maximum, as one bit mask built without data-dependent branches
+    // (a mispredicted early exit costs more than the whole scan of a small hull).
+    std::uint64_t reached = 0;
+    for (std::size_t i = 0; i < n; i += 2) {
+      reached |= static_cast<std::uint64_t>(_mm_movemask_pd(_mm_cmpeq_pd(values(i), best))) << i;
+    }
+    return static_cast<std::size_t>(std::countr_zero(reached));
+  }
   for (std::size_t i = 0;; i += 2) {
     const int mask = _mm_movemask_pd(_mm_cmpeq_pd(values(i), best));
     if (mask != 0) return i + ((mask & 1) != 0 ? 0 : 1);
