@@ -24,6 +24,8 @@ class PreparedHull {
 
   // Unit outward normal of edge i, the edge from vertex i to vertex i + 1 (cyclic).
   std::span<const Vec2> normals() const noexcept { return normals_; }
+  // normals()[i] . vertices()[i]: where edge i's supporting line lies along its normal.
+  std::span<const Real> face_offsets() const noexcept { return face_offsets_; }
   // Largest distance from the centroid to a vertex: the hull's length scale for tolerances.
   Real radius() const noexcept { return radius_; }
 
@@ -44,6 +46,7 @@ class PreparedHull {
   ConvexHull hull_;
   Vec2 centroid_{0, 0};
   std::vector<Vec2> normals_;
+  std::vector<Real> face_offsets_;
   std::vector<Real> sorted_angles_;
   std::size_t first_normal_ = 0;
   std::vector<Real> xs_;
