@@ -29,19 +29,56 @@ class PairFrame {
  public:
   PairFrame(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b, const Pose& pose_b)
       : a_(a), b_(b), pose_a_(pose_a) {
-    const Rotation& ra = pose_a.rotation;
-    const Rotation& rb = pose_b.rotation;
-    relative_.rotation = {ra.cos * rb.cos + ra.sin * rb.sin, ra.cos * rb.sin - ra.sin * rb.cos};
-    relative_.position = ra.apply_inverse(pose_b.position - pose_a.position);
+    relative_ = relative_pose(pose_a, pose_b);
+#if defined(__SSE2__)
+    if (b.padded_size() == kSupportBlock) {
+      // A small B is mapped into A's frame once, so each support of B in the loops is a plain
+      // scan with no rotation of the direction and no transform of the answer. The same
+      // operations in the same order as Pose::apply, so b_vertex is unchanged.
+      const __m128d c = _mm_set1_pd(relative_.rotation.cos);
+      const __m128d s = _mm_set1_pd(relative_.rotation.sin);
+      const __m128d tx = _mm_set1_pd(relative_.position.x());
+      const __m128d ty = _mm_set1_pd(relative_.position.y());
+      for (std::size_t k = 0; k < kSupportBlock; k += 2) {
+        const __m128d x = _mm_loadu_pd(b.xs() + k);
+        const __m128d y = _mm_loadu_pd(b.ys() + k);
+        _mm_storeu_pd(bx_.data() + k,
+                      _mm_add_pd(_mm_sub_pd(_mm_mul_pd(c, x), _mm_mul_pd(s, y)), tx));
+        _mm_storeu_pd(by_.data() + k,
+                      _mm_add_pd(_mm_add_pd(_mm_mul_pd(s, x), _mm_mul_pd(c, y)), ty));
+      }
+      mapped_ = true;
+    }
+#endif
   }
 
-  const PreparedHull& a() const noexcept { return a_; }
-  const PreparedHull& b() const noexcept { return b_; }
-  // B's local frame to A's.
-  const Pose& relative() const noexcept { return relative_; }
-  const Pose& pose_a() const noexcept { return pose_a_; }
+  // B's local frame to A's, for two posed hulls.
+  static Pose relative_pose(const Pose& pose_a, const Pose& pose_b) {
+    const Rotation& ra = pose_a.rotation;
+    const Rotation& rb = pose_b.rotation;
+    Pose relative;
+    relative.rotation = {ra.cos * rb.cos + ra.sin * rb.sin, ra.cos * rb.sin - ra.sin * rb.cos};
+    relative.position = ra.apply_inverse(pose_b.position - pose_a.position);
+    return relative;
+  }
 
-  Vec2 b_vertex(std::size_t i) const { return relative_.apply(b_.vertices()[i]); }
+  const PreparedHull& a() const noexcept {
+    return a_;
+  }
+  const PreparedHull& b() const noexcept {
+    return b_;
+  }
+  // B's local frame to A's.
+  const Pose& relative() const noexcept {
+    return relative_;
+  }
+  const Pose& pose_a() const noexcept {
+    return pose_a_;
+  }
+
+  Vec2 b_vertex(std::size_t i) const {
+    return mapped_ ? Vec2(bx_[i], by_[i]) : relative_.apply(b_.vertices()[i]);
+  }
 
   LocalVertex vertex(std::uint32_t ia, std::uint32_t ib) const {
     return {a_.vertices()[ia] - b_vertex(ib), ia, ib};
@@ -50,6 +87,13 @@ class PairFrame {
   // Support point of A - B along d (A's frame): eq. 4 of the paper.
   LocalVertex support(const Vec2& d) const {
     const auto ia = static_cast<std::uint32_t>(support_index(a_, d));
+#if defined(__SSE2__)
+    if (mapped_) {
+      const auto ib = static_cast<std::uint32_t>(
+          detail::support_block(bx_.data(), by_.data(), Vec2(-d.x(), -d.y())));
+      return {a_.vertices()[ia] - Vec2(bx_[ib], by_[ib]), ia, ib};
+    }
+#endif
     const auto ib =
         static_cast<std::uint32_t>(support_index(b_, relative_.rotation.apply_inverse(-d)));
     return vertex(ia, ib);
@@ -72,6 +116,9 @@ class PairFrame {
   const PreparedHull& b_;
   Pose pose_a_;
   Pose relative_;
+  std::array<Real, kSupportBlock> bx_{};  // B mapped into A's frame, when B is small
+  std::array<Real, kSupportBlock> by_{};
+  bool mapped_ = false;
 };
 
 // Multiplies v by a power of two (exact) so its largest component lies in [1, 2) when it is
