@@ -20,14 +20,15 @@ enum class Outcome { overlap, apart, cap };
 
 // The paper's loop on A - B in A's frame. On `apart`, `separating` is a direction along which
 // A - B lies wholly below zero.
-Outcome run_gjk(const detail::PairFrame& frame, Simplex& s, int& iterations, Vec2& separating) {
+Outcome run_gjk(const detail::PairFrame& frame, detail::LocalSimplex& s, int& iterations,
+                Vec2& separating) {
   // Eq. 2: from centroid to centroid. Equal centroids: any direction serves.
   Vec2 d = frame.relative().apply(frame.b().centroid()) - frame.a().centroid();
   if (d.x() == 0 && d.y() == 0) d = Vec2(1, 0);
   const int cap = static_cast<int>(2 * (frame.a().size() + frame.b().size())) + 16;
   while (iterations < cap) {
     d = detail::rescaled_direction(d);
-    const SimplexVertex v = frame.support(d);
+    const detail::LocalVertex v = frame.support(d);
     ++iterations;
     // A - B lies in {x : x.d <= v.d}: if that excludes the origin, the hulls are apart.
     if (v.point.dot(d) < 0) {
@@ -99,7 +100,7 @@ OverlapResult gjk_overlap(const PreparedHull& a, const Pose& pose_a, const Prepa
   const detail::PairFrame frame(a, pose_a, b, pose_b);
   OverlapResult result;
   Vec2 separating(0, 0);
-  Simplex local;
+  detail::LocalSimplex local;
   const Outcome outcome = run_gjk(frame, local, result.iterations, separating);
   result.simplex = detail::PairFrame::indices(local);
   if (outcome == Outcome::overlap) {

@@ -80,20 +80,17 @@ std::uint32_t incident_edge(const PreparedHull& incident, const Vec2& normal) {
 Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
                        const Pose& pose_b, Real speculative_distance) {
   Manifold manifold;
-  const Pose b_to_a = detail::PairFrame(a, pose_a, b, pose_b).relative();
+  const Pose b_to_a = detail::PairFrame::relative_pose(pose_a, pose_b);
   const detail::FaceSeparation on_a = detail::max_face_separation(a, b, b_to_a);
   if (on_a.separation > speculative_distance) return manifold;
   const Pose a_to_b = detail::inverse(b_to_a);
   const detail::FaceSeparation on_b = detail::max_face_separation(b, a, a_to_b);
   if (on_b.separation > speculative_distance) return manifold;
+  // Apart by less than the margin along a face normal. That only bounds the distance from
+  // below (corner to corner it is smaller); a clipped point within the margin proves the
+  // distance is within it too (it lies that far from a point of the reference face), and
+  // without one the true distance decides, below.
   const bool apart = std::max(on_a.separation, on_b.separation) > 0;
-  DistanceResult nearest{};
-  if (apart) {
-    // The face separation only bounds the distance from below (corner to corner it is
-    // smaller), so the margin is checked against the true distance.
-    nearest = gjk_distance(a, pose_a, b, pose_b);
-    if (nearest.distance > speculative_distance) return manifold;
-  }
 
   // Prefer A's face unless B's is clearly better, so the choice does not flicker between
   // steps when both are nearly equal (which would reset the feature ids).
@@ -129,12 +126,26 @@ Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const Prepared
   const int kept =
       clip(once, after_first, twice, tangent, tangent.dot(v2), feature_id(edge_end, i1, kClipped));
 
-  if (kept == 0) {
-    // The incident edge lies wholly beside the reference face (corner against corner, or a
-    // many-sided hull reaching past a short face): one point instead of none.
+  const Rotation& rotation = reference_pose.rotation;
+  manifold.normal = flip ? Vec2(-rotation.apply(normal)) : rotation.apply(normal);
+  for (int k = 0; k < kept; ++k) {
+    const ClipVertex& c = twice[static_cast<std::size_t>(k)];
+    const Real separation = normal.dot(c.point - v1);
+    if (separation > speculative_distance) continue;
+    ManifoldPoint& point = manifold.points[static_cast<std::size_t>(manifold.point_count++)];
+    point.point = reference_pose.apply(c.point - 0.5 * separation * normal);
+    point.separation = separation;
+    point.id = c.id | (flip ? kFlipped : 0);
+  }
+  if (manifold.point_count == 0) {
+    // Nothing clipped within the margin: the incident edge lies wholly beside the reference
+    // face (corner against corner, or a many-sided hull reaching past a short face). One
+    // point instead of none.
     ManifoldPoint& point = manifold.points[0];
-    manifold.point_count = 1;
     if (apart) {
+      const DistanceResult nearest = gjk_distance(a, pose_a, b, pose_b);
+      if (nearest.distance > speculative_distance) return manifold;
+      manifold.point_count = 1;
       manifold.normal = nearest.normal;
       point.point = 0.5 * (nearest.point_a + nearest.point_b);
       point.separation = nearest.distance;
@@ -153,6 +164,7 @@ Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const Prepared
       return manifold;
     }
     // Overlapping: the incident hull's deepest vertex, unclipped.
+    manifold.point_count = 1;
     const std::uint32_t deepest = static_cast<std::uint32_t>(
         support_index(incident, incident_to_reference.rotation.apply_inverse(-normal)));
     const Vec2 c = incident_to_reference.apply(incident.vertices()[deepest]);
@@ -165,17 +177,6 @@ Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const Prepared
     return manifold;
   }
 
-  const Rotation& rotation = reference_pose.rotation;
-  manifold.normal = flip ? Vec2(-rotation.apply(normal)) : rotation.apply(normal);
-  for (int k = 0; k < kept; ++k) {
-    const ClipVertex& c = twice[static_cast<std::size_t>(k)];
-    const Real separation = normal.dot(c.point - v1);
-    if (separation > speculative_distance) continue;
-    ManifoldPoint& point = manifold.points[static_cast<std::size_t>(manifold.point_count++)];
-    point.point = reference_pose.apply(c.point - 0.5 * separation * normal);
-    point.separation = separation;
-    point.id = c.id | (flip ? kFlipped : 0);
-  }
   return manifold;
 }
 

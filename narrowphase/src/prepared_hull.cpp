@@ -34,7 +34,12 @@ PreparedHull::PreparedHull(ConvexHull hull) : hull_(std::move(hull)) {
     const Vec2 unit_edge(std::ldexp(edge.x(), -exponent), std::ldexp(edge.y(), -exponent));
     normals_[i] = Vec2(unit_edge.y(), -unit_edge.x()).normalized();
     angles[i] = pseudo_angle(normals_[i]);
+    face_offsets_.push_back(normals_[i].dot(v[i]));
     radius_ = std::max(radius_, std::hypot(v[i].x() - centroid_.x(), v[i].y() - centroid_.y()));
+  }
+  for (std::size_t i = 0; i < std::max<std::size_t>(kSupportBlock, n + n % 2); ++i) {
+    xs_.push_back(v[i < n ? i : 0].x());
+    ys_.push_back(v[i < n ? i : 0].y());
   }
   first_normal_ =
       static_cast<std::size_t>(std::min_element(angles.begin(), angles.end()) - angles.begin());
