@@ -1,5 +1,6 @@
 #include "contact_compare.hpp"
 
+#include <box2d/b2_distance.h>
 #include <box2d/box2d.h>
 
 #include <algorithm>
