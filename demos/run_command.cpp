@@ -67,6 +67,15 @@ class Progress {
   int last_ = -1;
 };
 
+// Counted from the bodies, so the frame before the first step shows it too.
+std::size_t awake_bodies(const World& world) {
+  std::size_t awake = 0;
+  for (BodyId body : world.bodies()) {
+    awake += world.body_type(body) != BodyType::static_body && world.is_awake(body);
+  }
+  return awake;
+}
+
 int run_scene(const RunOptions& options, Streams streams) {
   if (options.steps && options.seconds) {
     throw InvalidArgumentError("give --steps or --seconds, not both");
@@ -131,7 +140,7 @@ int run_scene(const RunOptions& options, Streams streams) {
     std::snprintf(
         overlay, sizeof overlay, "%s  step %llu  t %.2f s\nbodies %zu  awake %zu  contacts %zu",
         options.scene.c_str(), static_cast<unsigned long long>(world.step_count()), world.time(),
-        world.body_count(), world.counters().awake_bodies, world.counters().touching_contacts);
+        world.body_count(), awake_bodies(world), world.counters().touching_contacts);
     draw_world_frame(*renderer, world, overlay);
     renderer->read_pixels_into(image, 3);
     if (png_sink) png_sink->write(image);
