@@ -131,9 +131,10 @@ int run_compare(const CompareOptions& options, Streams streams) {
   streams.out << line;
   for (const OracleMismatch& m : c.mismatches) {
     std::snprintf(line, sizeof line,
-                  "mismatch at step %lld: bodies %zu and %zu, mink says %s, Box2D the other; "
-                  "distance to touching %.3g%s\n",
-                  m.step, m.body_a, m.body_b, m.mink_overlap ? "overlap" : "apart", m.gap,
+                  "mismatch at step %lld: bodies %zu and %zu, mink says %s, Box2D the other, "
+                  "exact test %s; distance to touching %.3g%s\n",
+                  m.step, m.body_a, m.body_b, m.mink_overlap ? "overlap" : "apart",
+                  m.exact_overlap ? "overlap" : "apart", m.gap,
                   m.outside_band ? " (outside the band)" : " (inside the band)");
     streams.out << line;
   }

@@ -80,7 +80,12 @@ void run_oracle(const World& world, const std::vector<OracleShape>& shapes, long
       const DistanceResult d = gjk_distance(*a.hull, pa, *b.hull, pb);
       const double gap =
           d.overlap ? -penetration(*a.hull, pa, *b.hull, pb, d.simplex).depth : d.distance;
-      OracleMismatch m{step, a.body_index, b.body_index, ours, gap, std::abs(gap) > band};
+      std::vector<Vec2> wa;
+      std::vector<Vec2> wb;
+      for (const Vec2& v : a.hull->vertices()) wa.push_back(pa.apply(v));
+      for (const Vec2& v : b.hull->vertices()) wb.push_back(pb.apply(v));
+      OracleMismatch m{step, a.body_index,        b.body_index, ours, hulls_overlap_exact(wa, wb),
+                       gap,  std::abs(gap) > band};
       result.outside_band += m.outside_band;
       result.mismatches.push_back(m);
     }

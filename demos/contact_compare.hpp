@@ -24,6 +24,7 @@ struct OracleMismatch {
   std::size_t body_a = 0;  // scene body indices
   std::size_t body_b = 0;
   bool mink_overlap = false;
+  bool exact_overlap = false;  // the slow exact verdict on the same double-precision vertices
   double gap = 0;
   bool outside_band = false;
 };

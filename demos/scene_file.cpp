@@ -278,6 +278,69 @@ Json vec_json(const Vec2& v) {
   return Json::array({v.x(), v.y()});
 }
 
+// Re-reads text the DOM parser refused for a number too large for a double, to name where
+// that number is: the SAX events keep the path of the value being read.
+class PathTracker : public nlohmann::json_sax<Json> {
+ public:
+  std::string error_path;
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override {
+    frames_.push_back({false, 0, ""});
+    return true;
+  }
+  bool key(string_t& key) override {
+    frames_.back().key = key;
+    return true;
+  }
+  bool end_object() override { return end(); }
+  bool start_array(std::size_t) override {
+    frames_.push_back({true, 0, ""});
+    return true;
+  }
+  bool end_array() override { return end(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+    error_path = path();
+    return false;
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    std::size_t index;
+    std::string key;
+  };
+  std::string path() const {
+    std::string p;
+    for (const Frame& f : frames_) {
+      if (f.array) {
+        p.push_back('[');
+        p.append(std::to_string(f.index));
+        p.push_back(']');
+      } else {
+        if (!p.empty()) p.push_back('.');
+        p.append(f.key);
+      }
+    }
+    return p;
+  }
+  bool value() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+    return true;
+  }
+  bool end() {
+    frames_.pop_back();
+    return value();
+  }
+  std::vector<Frame> frames_;
+};
+
 }  // namespace
 
 SceneDef parse_scene_json(std::string_view text, const std::string& source) {
@@ -285,6 +348,14 @@ SceneDef parse_scene_json(std::string_view text, const std::string& source) {
   try {
     root = Json::parse(text);
   } catch (const Json::parse_error& error) {
+    throw SceneFileError(source, std::string("not valid JSON: ") + error.what());
+  } catch (const Json::out_of_range&) {
+    // JSON has no NaN or infinity; a literal like 1e999 is the only way to write one.
+    PathTracker tracker;
+    Json::sax_parse(text, &tracker);
+    throw SceneFileError(tracker.error_path.empty() ? source : tracker.error_path,
+                         "not a finite number (NaN or infinite)");
+  } catch (const Json::exception& error) {
     throw SceneFileError(source, std::string("not valid JSON: ") + error.what());
   }
   ObjectReader r(root, "");

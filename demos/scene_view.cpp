@@ -40,9 +40,8 @@ Real kinetic_energy(const World& world) {
   for (BodyId body : world.bodies()) {
     if (world.body_type(body) != BodyType::dynamic) continue;
     const Real w = world.angular_velocity(body);
-    // Velocities are those of the body origin; the centre of mass moves with v + w x r.
-    const Vec2 r = world.world_center(body) - world.position(body);
-    const Vec2 v = world.linear_velocity(body) + w * Vec2(-r.y(), r.x());
+    // The world keeps the centre of mass's velocity (a BodyDef gives the origin's).
+    const Vec2 v = world.linear_velocity(body);
     energy +=
         0.5 * world.mass(body) * v.squaredNorm() + 0.5 * world.rotational_inertia(body) * w * w;
   }

@@ -65,22 +65,29 @@ TEST(RunCommand, SecondsAndStepsAreExclusiveAndBadOptionsExit2) {
 
 // Resuming from --save: the pose and velocities of every body are kept exactly, but the
 // contact impulses the solver warm-starts from are not part of a scene, so the resumed run
-// drifts slightly from the uninterrupted one. The bound checks that it is the same motion.
+// starts its contacts cold and drifts from the uninterrupted one. On a resting pyramid that is
+// under a millimetre in 30 steps (the stack settles a little while the impulses build up
+// again); in chaotic scenes (rain, tumbler) the same tiny difference grows to decimetres, as
+// any perturbation would, so only the saved state itself is compared exactly there.
 TEST(RunCommand, SaveThenResumeFollowsTheUninterruptedRun) {
   const auto dir = fresh_dir("resume");
   const auto saved = (dir / "half.json").string();
-  ASSERT_EQ(run_cli({"run", "rain", "--steps", "60", "--no-render", "--save", saved}).code, 0);
+  ASSERT_EQ(run_cli({"run", "pyramid", "--steps", "60", "--no-render", "--save", saved}).code, 0);
   // The saved file is the world as it stood: same state as 60 steps in-process.
-  World direct = build_world(builtin_scene("rain"));
+  World direct = build_world(builtin_scene("pyramid"));
   for (int i = 0; i < 60; ++i) direct.step();
   const SceneDef at_half = cli::load_scene_file(saved);
+  const SceneDef expected = capture_scene(direct);
   const auto ids = direct.bodies();
-  ASSERT_EQ(at_half.bodies.size(), ids.size());
-  for (std::size_t i = 0; i < ids.size(); ++i) {
-    ASSERT_EQ(at_half.bodies[i].body.position, direct.position(ids[i])) << i;
-    ASSERT_EQ(at_half.bodies[i].body.angle, direct.angle(ids[i])) << i;
-    ASSERT_EQ(at_half.bodies[i].body.linear_velocity, direct.linear_velocity(ids[i])) << i;
-    ASSERT_EQ(at_half.bodies[i].body.angular_velocity, direct.angular_velocity(ids[i])) << i;
+  ASSERT_EQ(at_half.bodies.size(), expected.bodies.size());
+  for (std::size_t i = 0; i < expected.bodies.size(); ++i) {
+    const BodyDef& got = at_half.bodies[i].body;
+    const BodyDef& want = expected.bodies[i].body;
+    ASSERT_EQ(got.position, want.position) << i;
+    ASSERT_EQ(got.angle, want.angle) << i;
+    ASSERT_EQ(got.linear_velocity, want.linear_velocity) << i;
+    ASSERT_EQ(got.angular_velocity, want.angular_velocity) << i;
+    ASSERT_EQ(got.awake, want.awake) << i;
   }
   const auto end = (dir / "end.json").string();
   ASSERT_EQ(run_cli({"run", saved, "--steps", "30", "--no-render", "--save", end}).code, 0);
@@ -90,10 +97,8 @@ TEST(RunCommand, SaveThenResumeFollowsTheUninterruptedRun) {
   for (std::size_t i = 0; i < ids.size(); ++i) {
     worst = std::max(worst, (resumed.bodies[i].body.position - direct.position(ids[i])).norm());
   }
-  // Bodies fall about 2 m in these 30 steps; they must end within a centimetre of the
-  // uninterrupted run.
-  EXPECT_LT(worst, 0.01);
-  std::printf("resume vs uninterrupted after 60 + 30 steps of rain: worst position gap %.3g m\n",
+  EXPECT_LT(worst, 0.002);
+  std::printf("resume vs uninterrupted after 60 + 30 steps of pyramid: worst position gap %.3g m\n",
               worst);
 }
 
