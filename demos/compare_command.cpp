@@ -137,6 +137,17 @@ int run_compare(const CompareOptions& options, Streams streams) {
                   m.exact_overlap ? "overlap" : "apart", m.gap,
                   m.outside_band ? " (outside the band)" : " (inside the band)");
     streams.out << line;
+    if (m.outside_band) {
+      // Full precision, so the case can be replayed against the narrowphase alone.
+      for (const auto* hull : {&m.world_a, &m.world_b}) {
+        streams.out << "  hull " << (hull == &m.world_a ? m.body_a : m.body_b) << ':';
+        for (const Vec2& v : *hull) {
+          std::snprintf(line, sizeof line, " (%.17g, %.17g)", v.x(), v.y());
+          streams.out << line;
+        }
+        streams.out << '\n';
+      }
+    }
   }
   std::snprintf(line, sizeof line,
                 "overlap oracle: %zu configurations, %zu candidate pairs (%zu overlapping), %zu "

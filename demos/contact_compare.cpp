@@ -84,10 +84,11 @@ void run_oracle(const World& world, const std::vector<OracleShape>& shapes, long
       std::vector<Vec2> wb;
       for (const Vec2& v : a.hull->vertices()) wa.push_back(pa.apply(v));
       for (const Vec2& v : b.hull->vertices()) wb.push_back(pb.apply(v));
-      OracleMismatch m{step, a.body_index,        b.body_index, ours, hulls_overlap_exact(wa, wb),
-                       gap,  std::abs(gap) > band};
+      const bool exact = hulls_overlap_exact(wa, wb);
+      OracleMismatch m{step, a.body_index,         b.body_index,  ours,         exact,
+                       gap,  std::abs(gap) > band, std::move(wa), std::move(wb)};
       result.outside_band += m.outside_band;
-      result.mismatches.push_back(m);
+      result.mismatches.push_back(std::move(m));
     }
   }
 }

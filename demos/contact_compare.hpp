@@ -27,6 +27,8 @@ struct OracleMismatch {
   bool exact_overlap = false;  // the slow exact verdict on the same double-precision vertices
   double gap = 0;
   bool outside_band = false;
+  std::vector<Vec2> world_a;  // both hulls in world coordinates, to reproduce the case
+  std::vector<Vec2> world_b;
 };
 
 struct ContactComparison {
