@@ -47,6 +47,8 @@ void plot_counts(const ContactComparison& c, const std::string& scene, GlBackend
     max_count = std::max(
         {max_count, row.mink_pairs, row.mink_contacts, row.box2d_pairs, row.box2d_touching});
   }
+  // Headroom, and a round top: a flat line at the maximum stays visible, ticks stay whole.
+  max_count = (max_count + max_count / 8 + 3) / 4 * 4;
   const double steps = static_cast<double>(c.rows.size());
   auto at = [&](double step, double count) {
     return Vec2(left + (right - left) * step / steps,
