@@ -21,8 +21,26 @@ build: deps-build
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(CMAKE_FLAGS)
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
-demo: build
-	$(BUILD_DIR)/bin/mink demo
+# The default scene headless (video, a few frames, stats), the paper's figures and a Box2D
+# comparison with its plot, all under out/.
+demo: deps-test
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(CMAKE_FLAGS)
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target mink
+	mkdir -p out/frames
+	$(BUILD_DIR)/bin/mink run tumbler --seconds 10 --video out/demo.mp4 --stats out/stats.csv \
+	  --save out/final.json --out out
+	ffmpeg -loglevel error -y -i out/demo.mp4 -vf "select=not(mod(n\\,60))" -vsync vfr \
+	  out/frames/frame_%02d.png
+	$(BUILD_DIR)/bin/mink paper --out out/paper
+	$(BUILD_DIR)/bin/mink compare pyramid --steps 600 --out out/compare
+	@echo
+	@echo "Demo outputs:"
+	@echo "  video         out/demo.mp4 (tumbler, 10 s)"
+	@echo "  frames        out/frames/frame_*.png (every 2 s of the video)"
+	@echo "  statistics    out/stats.csv (one row per step)"
+	@echo "  final state   out/final.json (resume: mink run out/final.json)"
+	@echo "  figures       out/paper/"
+	@echo "  Box2D compare out/compare/contacts.csv and out/compare/contacts.png"
 
 test: deps-test
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DMINK_BUILD_TESTS=ON $(CMAKE_FLAGS)

@@ -21,6 +21,10 @@ Action add_demo_command(CLI::App& app, Streams streams);
 Action add_overlap_command(CLI::App& app, Streams streams);
 Action add_crosscheck_command(CLI::App& app, Streams streams);
 Action add_paper_command(CLI::App& app, Streams streams);
+Action add_scenes_command(CLI::App& app, Streams streams);
+Action add_export_scene_command(CLI::App& app, Streams streams);
+Action add_run_command(CLI::App& app, Streams streams);
+Action add_compare_command(CLI::App& app, Streams streams);
 
 // Runs `mink` with the given arguments; what main() does, callable from tests.
 int run(int argc, const char* const* argv, Streams streams);

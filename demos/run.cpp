@@ -19,8 +19,12 @@ int run(int argc, const char* const* argv, Streams streams) {
   actions["overlap"] = add_overlap_command(app, streams);
 #ifdef MINK_WITH_BOX2D
   actions["crosscheck"] = add_crosscheck_command(app, streams);
+  actions["compare"] = add_compare_command(app, streams);
 #endif
   actions["paper"] = add_paper_command(app, streams);
+  actions["scenes"] = add_scenes_command(app, streams);
+  actions["export-scene"] = add_export_scene_command(app, streams);
+  actions["run"] = add_run_command(app, streams);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {

@@ -95,7 +95,7 @@ void run_ours(benchmark::State& state, const Case& c) {
 
 void run_box2d(benchmark::State& state, const Case& c) {
   for (auto _ : state) {
-    Box2dScene scene = build_box2d_world(bench_scene(c.name));
+    interop::Box2dScene scene = interop::build_box2d_world(bench_scene(c.name));
     const b2Vec2 start = scene.top->GetPosition();
     const float dt = static_cast<float>(bench_scene(c.name).world.time_step);
     time_steps(state, c.steps, g_samples[{c.name, std::string(kBox2d)}],

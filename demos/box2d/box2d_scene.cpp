@@ -2,21 +2,48 @@
 
 #include <box2d/box2d.h>
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "mink/engine/shape_def.hpp"
+#include "mink/error.hpp"
 
-namespace mink::bench {
+namespace mink::interop {
+
+namespace {
+
+const char* type_name(BodyType type) {
+  return type == BodyType::dynamic     ? "dynamic"
+         : type == BodyType::kinematic ? "kinematic"
+                                       : "static";
+}
+
+}  // namespace
 
 Box2dScene build_box2d_world(const SceneDef& scene) {
+  // Every hull first, so a refused scene makes no Box2D world at all.
+  std::vector<std::vector<ConvexHull>> hulls(scene.bodies.size());
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const SceneBody& body = scene.bodies[i];
+    for (std::size_t k = 0; k < body.shapes.size(); ++k) {
+      hulls[i].push_back(make_shape_hull(body.shapes[k]));
+      if (hulls[i].back().size() > b2_maxPolygonVertices) {
+        throw InvalidArgumentError(
+            "body " + std::to_string(i) + " (" + type_name(body.body.type) + ", at " +
+            std::to_string(body.body.position.x()) + ", " + std::to_string(body.body.position.y()) +
+            ") shape " + std::to_string(k) + " has " + std::to_string(hulls[i].back().size()) +
+            " hull vertices; a Box2D polygon holds at most " +
+            std::to_string(b2_maxPolygonVertices) + " and hulls are never truncated");
+      }
+    }
+  }
   Box2dScene result;
   result.world = std::make_unique<b2World>(b2Vec2(static_cast<float>(scene.world.gravity.x()),
                                                   static_cast<float>(scene.world.gravity.y())));
   result.world->SetAllowSleeping(scene.world.enable_sleep);
   float top_y = -1e30f;
-  for (const SceneBody& body : scene.bodies) {
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const SceneBody& body = scene.bodies[i];
     b2BodyDef def;
     def.type = body.body.type == BodyType::dynamic     ? b2_dynamicBody
                : body.body.type == BodyType::kinematic ? b2_kinematicBody
@@ -32,13 +59,10 @@ Box2dScene build_box2d_world(const SceneDef& scene) {
     def.gravityScale = static_cast<float>(body.body.gravity_scale);
     def.allowSleep = body.body.allow_sleep;
     b2Body* b = result.world->CreateBody(&def);
-    for (const ShapeDef& shape : body.shapes) {
-      const ConvexHull hull = make_shape_hull(shape);
-      if (hull.size() > b2_maxPolygonVertices) {
-        throw std::invalid_argument("Box2D polygons have at most " +
-                                    std::to_string(b2_maxPolygonVertices) + " vertices, got " +
-                                    std::to_string(hull.size()));
-      }
+    result.bodies.push_back(b);
+    for (std::size_t k = 0; k < body.shapes.size(); ++k) {
+      const ShapeDef& shape = body.shapes[k];
+      const ConvexHull& hull = hulls[i][k];
       std::vector<b2Vec2> vertices;
       for (const Vec2& v : hull.vertices()) {
         vertices.emplace_back(static_cast<float>(v.x()), static_cast<float>(v.y()));
@@ -60,4 +84,4 @@ Box2dScene build_box2d_world(const SceneDef& scene) {
   return result;
 }
 
-}  // namespace mink::bench
+}  // namespace mink::interop

@@ -1,0 +1,133 @@
+#include "contact_compare.hpp"
+
+#include <box2d/b2_distance.h>
+#include <box2d/box2d.h>
+
+#include <algorithm>
+
+#include "box2d_scene.hpp"
+#include "mink/error.hpp"
+#include "mink/narrowphase/gjk_distance.hpp"
+#include "mink/narrowphase/gjk_overlap.hpp"
+#include "mink/narrowphase/penetration.hpp"
+#include "mink/narrowphase/prepared_hull.hpp"
+
+namespace mink::cli {
+
+namespace {
+
+struct OracleShape {
+  std::size_t body_index;
+  BodyId body;
+  ShapeId shape;
+  const PreparedHull* hull;
+  bool dynamic;
+};
+
+bool box2d_overlap(std::span<const Vec2> a, const Pose& pose_a, std::span<const Vec2> b,
+                   const Pose& pose_b) {
+  const Vec2 origin = pose_a.position;
+  std::vector<b2Vec2> va;
+  std::vector<b2Vec2> vb;
+  for (const Vec2& v : a) {
+    const Vec2 w = pose_a.apply(v) - origin;
+    va.emplace_back(static_cast<float>(w.x()), static_cast<float>(w.y()));
+  }
+  for (const Vec2& v : b) {
+    const Vec2 w = pose_b.apply(v) - origin;
+    vb.emplace_back(static_cast<float>(w.x()), static_cast<float>(w.y()));
+  }
+  b2DistanceInput input;
+  input.proxyA.Set(va.data(), static_cast<int32>(va.size()), 0.0f);
+  input.proxyB.Set(vb.data(), static_cast<int32>(vb.size()), 0.0f);
+  input.transformA.SetIdentity();
+  input.transformB.SetIdentity();
+  input.useRadii = false;
+  b2SimplexCache cache;
+  cache.count = 0;
+  b2DistanceOutput output;
+  b2Distance(&output, &cache, &input);
+  return output.distance == 0.0f;
+}
+
+void run_oracle(const World& world, const std::vector<OracleShape>& shapes, long long step,
+                double band, ContactComparison& result) {
+  struct Entry {
+    Aabb box;
+    std::size_t index;
+  };
+  std::vector<Entry> entries;
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    entries.push_back({world.shape_aabb(shapes[i].shape), i});
+  }
+  std::sort(entries.begin(), entries.end(),
+            [](const Entry& p, const Entry& q) { return p.box.lower.x() < q.box.lower.x(); });
+  ++result.oracle_checks;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    for (std::size_t j = i + 1; j < entries.size(); ++j) {
+      if (entries[j].box.lower.x() > entries[i].box.upper.x()) break;
+      if (!entries[i].box.overlaps(entries[j].box)) continue;
+      const OracleShape& a = shapes[std::min(entries[i].index, entries[j].index)];
+      const OracleShape& b = shapes[std::max(entries[i].index, entries[j].index)];
+      if (a.body == b.body || (!a.dynamic && !b.dynamic)) continue;
+      const Pose pa = world.pose(a.body);
+      const Pose pb = world.pose(b.body);
+      const bool ours = gjk_overlap(*a.hull, pa, *b.hull, pb).overlap;
+      const bool theirs = box2d_overlap(a.hull->vertices(), pa, b.hull->vertices(), pb);
+      ++result.oracle_pairs;
+      result.oracle_overlapping += ours;
+      if (ours == theirs) continue;
+      const DistanceResult d = gjk_distance(*a.hull, pa, *b.hull, pb);
+      const double gap =
+          d.overlap ? -penetration(*a.hull, pa, *b.hull, pb, d.simplex).depth : d.distance;
+      std::vector<Vec2> wa;
+      std::vector<Vec2> wb;
+      for (const Vec2& v : a.hull->vertices()) wa.push_back(pa.apply(v));
+      for (const Vec2& v : b.hull->vertices()) wb.push_back(pb.apply(v));
+      const bool exact = hulls_overlap_exact(wa, wb);
+      OracleMismatch m{step, a.body_index,         b.body_index,  ours,         exact,
+                       gap,  std::abs(gap) > band, std::move(wa), std::move(wb)};
+      result.outside_band += m.outside_band;
+      result.mismatches.push_back(std::move(m));
+    }
+  }
+}
+
+}  // namespace
+
+ContactComparison compare_contacts(const SceneDef& scene, long long steps, int every, double band) {
+  if (steps < 1) throw InvalidArgumentError("steps must be at least 1");
+  if (every < 1) throw InvalidArgumentError("--every must be at least 1");
+  interop::Box2dScene rival = interop::build_box2d_world(scene);  // refuses big hulls first
+  World world = build_world(scene);
+  // Prepared once: hulls never change, only poses.
+  std::vector<std::unique_ptr<PreparedHull>> prepared;
+  std::vector<OracleShape> shapes;
+  const std::vector<BodyId> bodies = world.bodies();
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    for (ShapeId shape : world.body_shapes(bodies[i])) {
+      prepared.push_back(std::make_unique<PreparedHull>(world.shape_hull(shape)));
+      shapes.push_back({i, bodies[i], shape, prepared.back().get(),
+                        world.body_type(bodies[i]) == BodyType::dynamic});
+    }
+  }
+  ContactComparison result;
+  const float dt = static_cast<float>(scene.world.time_step);
+  for (long long step = 1; step <= steps; ++step) {
+    world.step();
+    rival.world->Step(dt, 8, 3);
+    ContactCountRow row;
+    row.step = step;
+    row.mink_pairs = world.counters().broadphase_pairs;
+    row.mink_contacts = world.counters().touching_contacts;
+    for (const b2Contact* c = rival.world->GetContactList(); c != nullptr; c = c->GetNext()) {
+      ++row.box2d_pairs;
+      row.box2d_touching += c->IsTouching();
+    }
+    result.rows.push_back(row);
+    if (step % every == 0 || step == steps) run_oracle(world, shapes, step, band, result);
+  }
+  return result;
+}
+
+}  // namespace mink::cli

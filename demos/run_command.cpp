@@ -1,0 +1,230 @@
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "mink/error.hpp"
+#include "mink/render/frame_sink.hpp"
+#include "mink/render/gl_context.hpp"
+#include "mink/render/renderer.hpp"
+#include "scene_file.hpp"
+#include "scene_view.hpp"
+
+namespace mink::cli {
+
+namespace {
+
+struct RunOptions {
+  std::string scene = "tumbler";
+  std::optional<long long> steps;
+  std::optional<double> seconds;
+  std::string out = "out";
+  bool frames = false;
+  std::string video;
+  double fps = 30;
+  std::string stats;
+  std::string save;
+  bool no_render = false;
+  std::string gl = "osmesa";
+  std::string size = "1280x720";
+};
+
+// A bar redrawn in place on a terminal; elsewhere (logs, pipes) a line every tenth of the run.
+class Progress {
+ public:
+  Progress(std::ostream& err, long long total)
+      : err_(err), total_(total), terminal_(&err == &std::cerr && isatty(STDERR_FILENO) != 0) {}
+  void update(long long done) {
+    if (terminal_) {
+      const int width = 40;
+      const int filled = static_cast<int>(width * done / total_);
+      if (filled == last_ && done != total_) return;
+      last_ = filled;
+      err_ << "\r[" << std::string(filled, '#') << std::string(width - filled, '-') << "] " << done
+           << '/' << total_ << (done == total_ ? "\n" : "") << std::flush;
+    } else {
+      const int tenth = static_cast<int>(10 * done / total_);
+      if (tenth == last_) return;
+      last_ = tenth;
+      err_ << "progress: step " << done << " of " << total_ << " (" << 10 * tenth << "%)\n";
+    }
+  }
+
+ private:
+  std::ostream& err_;
+  long long total_;
+  bool terminal_;
+  int last_ = -1;
+};
+
+// Counted from the bodies, so the frame before the first step shows it too.
+std::size_t awake_bodies(const World& world) {
+  std::size_t awake = 0;
+  for (BodyId body : world.bodies()) {
+    awake += world.body_type(body) != BodyType::static_body && world.is_awake(body);
+  }
+  return awake;
+}
+
+int run_scene(const RunOptions& options, Streams streams) {
+  if (options.steps && options.seconds) {
+    throw InvalidArgumentError("give --steps or --seconds, not both");
+  }
+  if (options.no_render && (options.frames || !options.video.empty())) {
+    throw InvalidArgumentError("--no-render cannot write --frames or --video");
+  }
+  if (!(options.fps >= 1 && options.fps <= 1000)) {
+    throw InvalidArgumentError("--fps must be in 1..1000");
+  }
+  int width = 0;
+  int height = 0;
+  parse_frame_size(options.size, width, height);
+  const GlBackend backend = parse_gl_backend(options.gl);
+  // The whole scene is read and checked before any output exists.
+  const SceneDef scene = resolve_scene(options.scene);
+  World world = build_world(scene);
+  const Real dt = scene.world.time_step;
+  long long steps = 600;
+  if (options.steps) steps = *options.steps;
+  if (options.seconds) {
+    if (!(*options.seconds > 0) || !std::isfinite(*options.seconds)) {
+      throw InvalidArgumentError("--seconds must be positive");
+    }
+    steps = std::llround(*options.seconds / dt);
+  }
+  if (steps < 1) throw InvalidArgumentError("--steps must be at least 1");
+
+  const std::filesystem::path out(options.out);
+  std::unique_ptr<GlContext> context;
+  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<FrameSink> png_sink;
+  std::unique_ptr<FrameSink> video_sink;
+  const bool render = !options.no_render && (options.frames || !options.video.empty());
+  if (render) {
+    context = make_offscreen_context(backend, width, height);
+    renderer = std::make_unique<Renderer>(*context);
+    Vec2 lower;
+    Vec2 upper;
+    scene_bounds(world, lower, upper);
+    renderer->camera().fit(lower, upper, 24);
+    if (options.frames) png_sink = open_frame_sink(out / "frames", width, height);
+    if (!options.video.empty()) {
+      VideoOptions video;
+      video.fps = static_cast<int>(std::lround(options.fps));
+      video_sink = open_frame_sink(options.video, width, height, video);
+    }
+  }
+  std::ofstream stats;
+  if (!options.stats.empty()) {
+    const std::filesystem::path path(options.stats);
+    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+    stats.open(path);
+    if (!stats) throw InvalidArgumentError("cannot write --stats file '" + options.stats + "'");
+    stats << "step,time,bodies,awake,pairs,contacts,kinetic_energy,step_ms\n";
+  }
+  // A frame every this many steps keeps video time equal to simulated time.
+  const long long frame_every = std::max(1LL, std::llround(1.0 / (options.fps * dt)));
+  Image image;
+  auto write_frame = [&] {
+    char overlay[256];
+    std::snprintf(
+        overlay, sizeof overlay, "%s  step %llu  t %.2f s\nbodies %zu  awake %zu  contacts %zu",
+        options.scene.c_str(), static_cast<unsigned long long>(world.step_count()), world.time(),
+        world.body_count(), awake_bodies(world), world.counters().touching_contacts);
+    draw_world_frame(*renderer, world, overlay);
+    renderer->read_pixels_into(image, 3);
+    if (png_sink) png_sink->write(image);
+    if (video_sink) video_sink->write(image);
+  };
+  if (render) write_frame();
+
+  Progress progress(streams.err, steps);
+  double total_ms = 0;
+  std::size_t contacts_sum = 0;
+  const auto started = std::chrono::steady_clock::now();
+  char line[256];
+  for (long long i = 1; i <= steps; ++i) {
+    const auto before = std::chrono::steady_clock::now();
+    world.step();
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - before)
+            .count();
+    total_ms += ms;
+    const StepCounters& c = world.counters();
+    contacts_sum += c.touching_contacts;
+    if (stats.is_open()) {
+      std::snprintf(line, sizeof line, "%llu,%.17g,%zu,%zu,%zu,%zu,%.17g,%.6f\n",
+                    static_cast<unsigned long long>(world.step_count()), world.time(),
+                    world.body_count(), c.awake_bodies, c.broadphase_pairs, c.touching_contacts,
+                    kinetic_energy(world), ms);
+      stats << line;
+    }
+    if (render && i % frame_every == 0) write_frame();
+    progress.update(i);
+  }
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (png_sink) png_sink->close();
+  if (video_sink) video_sink->close();
+  if (stats.is_open()) {
+    stats.close();
+    if (!stats) throw InvalidArgumentError("writing --stats file '" + options.stats + "' failed");
+  }
+  if (!options.save.empty()) save_scene_file(options.save, capture_scene(world));
+
+  streams.out << "scene " << options.scene << '\n';
+  std::snprintf(line, sizeof line,
+                "steps %lld, simulated %.3f s, wall %.3f s, %.3f ms per step (physics only)\n",
+                steps, world.time(), wall, total_ms / static_cast<double>(steps));
+  streams.out << line;
+  std::snprintf(
+      line, sizeof line, "bodies %zu (%zu awake), contacts %zu at the end, %.1f on average\n",
+      world.body_count(), world.counters().awake_bodies, world.counters().touching_contacts,
+      static_cast<double>(contacts_sum) / static_cast<double>(steps));
+  streams.out << line;
+  if (png_sink) {
+    streams.out << "frames: " << png_sink->frames_written() << " PNG files in "
+                << (out / "frames").string() << '\n';
+  }
+  if (video_sink) {
+    streams.out << "video: " << options.video << " (" << video_sink->frames_written()
+                << " frames at " << std::lround(options.fps) << " fps)\n";
+  }
+  if (!options.stats.empty()) streams.out << "stats: " << options.stats << '\n';
+  if (!options.save.empty()) streams.out << "saved: " << options.save << '\n';
+  return kSuccess;
+}
+
+}  // namespace
+
+Action add_run_command(CLI::App& app, Streams streams) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* command = app.add_subcommand(
+      "run", "Run a scene (a built-in name or a scene file) headless: frames, video, stats.");
+  command->add_option("scene", options->scene,
+                      "built-in scene (see 'mink scenes') or scene file (default tumbler)");
+  auto* steps = command->add_option("--steps", options->steps, "steps to run (default 600)");
+  command->add_option("--seconds", options->seconds, "simulated seconds to run")->excludes(steps);
+  command->add_option("--out", options->out, "directory for --frames (default out)");
+  command->add_flag("--frames", options->frames, "write every frame as a PNG in OUT/frames");
+  command->add_option("--video", options->video, "write the run as a video (e.g. demo.mp4)");
+  command->add_option("--fps", options->fps, "frames per simulated second (default 30)");
+  command->add_option("--stats", options->stats, "per-step statistics CSV");
+  command->add_option("--save", options->save, "write the final world as a scene file");
+  command->add_flag("--no-render", options->no_render, "no GL at all (statistics only)");
+  command->add_option("--gl", options->gl, "headless GL backend: osmesa (default) or egl");
+  command->add_option("--size", options->size, "frame size WIDTHxHEIGHT (default 1280x720)");
+  return [options, streams] { return run_scene(*options, streams); };
+}
+
+}  // namespace mink::cli

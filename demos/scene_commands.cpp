@@ -1,0 +1,41 @@
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <string>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "scene_file.hpp"
+
+namespace mink::cli {
+
+Action add_scenes_command(CLI::App& app, Streams streams) {
+  app.add_subcommand("scenes", "List the built-in scenes (each with its body count).");
+  return [streams] {
+    for (std::string_view name : builtin_scene_names()) {
+      streams.out << name << " (" << builtin_scene(name).bodies.size() << " bodies)\n";
+    }
+    return static_cast<int>(kSuccess);
+  };
+}
+
+Action add_export_scene_command(CLI::App& app, Streams streams) {
+  auto name = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  CLI::App* command = app.add_subcommand(
+      "export-scene", "Write a built-in scene as a scene file (docs/scene-format.md).");
+  command->add_option("name", *name, "built-in scene name (see 'mink scenes')")->required();
+  command->add_option("--out", *out, "file to write (default: standard output)");
+  return [name, out, streams] {
+    const SceneDef scene = builtin_scene(*name);
+    if (out->empty()) {
+      streams.out << scene_to_json(scene);
+    } else {
+      save_scene_file(*out, scene);
+      streams.out << "wrote " << *out << " (" << scene.bodies.size() << " bodies)\n";
+    }
+    return static_cast<int>(kSuccess);
+  };
+}
+
+}  // namespace mink::cli
