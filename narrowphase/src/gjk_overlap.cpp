@@ -69,17 +69,18 @@ Outcome run_gjk(const detail::PairFrame& frame, detail::LocalSimplex& s, int& it
     }
     const int side_ab = orient2d(pa, pb, kOrigin);
     if (side_ab == -winding) {  // outside edge ab: drop c
+      // The direction first: pa and pb refer into the simplex the shift below overwrites.
+      d = perpendicular_towards(pa, pb, side_ab);
       s.vertices[0] = s.vertices[1];
       s.vertices[1] = s.vertices[2];
       s.count = 2;
-      d = perpendicular_towards(pa, pb, side_ab);
       continue;
     }
     const int side_ca = orient2d(pc, pa, kOrigin);
     if (side_ca == -winding) {  // outside edge ca: drop b
+      d = perpendicular_towards(pc, pa, side_ca);
       s.vertices[1] = s.vertices[2];
       s.count = 2;
-      d = perpendicular_towards(pc, pa, side_ca);
       continue;
     }
     const int side_bc = orient2d(pb, pc, kOrigin);

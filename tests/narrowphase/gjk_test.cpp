@@ -75,6 +75,35 @@ TEST(GjkOverlap, AgreesWithTheExactTestOnRandomPairs) {
   EXPECT_LT(overlapping, total * 4 / 5);
 }
 
+// Long thin boxes against small ones, as a wall against the bodies it holds: here the
+// simplex often leaves through edge ab, the case that once aimed the search along a zero
+// direction and answered "overlap" for hulls centimetres apart.
+TEST(GjkOverlap, ThinWallsAgreeWithTheExactTest) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<Real> length(2, 30), thickness(0.05, 1), side(0.2, 1);
+  int overlapping = 0;
+  int total = 0;
+  for (int k = 0; k < 40000 / kScale; ++k) {
+    const Real l = length(rng), t = thickness(rng), s = side(rng);
+    const PreparedHull wall =
+        hull_of({{-l / 2, -t / 2}, {l / 2, -t / 2}, {l / 2, t / 2}, {-l / 2, t / 2}});
+    const PreparedHull box =
+        hull_of({{-s / 2, -s / 2}, {s / 2, -s / 2}, {s / 2, s / 2}, {-s / 2, s / 2}});
+    const Pose pa = random_pose(rng, 1);
+    const Pose pb = random_pose(rng, l / 2);
+    const std::vector<Vec2> wa = world_vertices(wall, pa);
+    const std::vector<Vec2> wb = world_vertices(box, pb);
+    const bool exact = hulls_overlap_exact(wa, wb);
+    const Real margin = exact ? brute_depth(wa, wb).depth : brute_distance(wa, wb);
+    if (margin < 1e-12) continue;
+    ASSERT_EQ(gjk_overlap(wall, pa, box, pb).overlap, exact) << "pair " << k;
+    overlapping += exact;
+    ++total;
+  }
+  EXPECT_GT(overlapping, total / 20);
+  EXPECT_LT(overlapping, total * 19 / 20);
+}
+
 TEST(GjkOverlap, TouchingCountsAsOverlap) {
   const PreparedHull a = hull_of({Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)});
   // Origin on an edge of A - B: the boxes share an edge.
