@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 CTEST_FLAGS ?= --output-on-failure
 
-.PHONY: all deps build demo test bench format clean sanitize-test
+.PHONY: all deps build demo test bench docs format clean sanitize-test
 
 all: build
 
@@ -56,6 +56,15 @@ bench: deps-bench
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DMINK_BUILD_BENCH=ON $(CMAKE_FLAGS)
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 	bench/run.sh $(BUILD_DIR)
+
+# API reference from the public headers' comments, when doxygen is installed.
+docs:
+	@if command -v doxygen >/dev/null 2>&1; then \
+	  mkdir -p $(BUILD_DIR)/docs && MINK_DOCS_DIR=$(BUILD_DIR)/docs doxygen docs/Doxyfile && \
+	  echo "API reference: $(BUILD_DIR)/docs/html/index.html"; \
+	else \
+	  echo "make docs: doxygen not found, no API reference built (sudo apt-get install doxygen)"; \
+	fi
 
 format:
 	git ls-files '*.cpp' '*.hpp' | xargs clang-format -i

@@ -6,19 +6,19 @@
 
 namespace mink {
 
-// Root of every error Minkowski raises at an API boundary, so callers can catch one type.
+/// Root of every error Minkowski raises at an API boundary, so callers can catch one type.
 class Error : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
 
-// A parameter outside its documented domain (negative scale, unknown algorithm name, ...).
+/// A parameter outside its documented domain (negative scale, unknown algorithm name, ...).
 class InvalidArgumentError : public Error {
  public:
   using Error::Error;
 };
 
-// A coordinate that is NaN or infinite; `index` names the offending point.
+/// A coordinate that is NaN or infinite; `index` names the offending point.
 class NonFiniteInputError : public Error {
  public:
   explicit NonFiniteInputError(std::size_t index)
@@ -29,7 +29,7 @@ class NonFiniteInputError : public Error {
   std::size_t index_;
 };
 
-// Input with no area: fewer than three distinct, non-collinear points.
+/// Input with no area: fewer than three distinct, non-collinear points.
 class DegenerateInputError : public Error {
  public:
   using Error::Error;

@@ -4,7 +4,7 @@
 
 namespace mink {
 
-// Axis-aligned bounding box; `lower` <= `upper` component-wise. Touching boxes overlap.
+/// Axis-aligned bounding box; `lower` <= `upper` component-wise. Touching boxes overlap.
 struct Aabb {
   Vec2 lower{0, 0};
   Vec2 upper{0, 0};

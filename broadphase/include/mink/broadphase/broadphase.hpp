@@ -8,47 +8,57 @@
 
 namespace mink {
 
-// Stays valid from create_proxy until destroy_proxy, whatever happens to other proxies.
+/// Stays valid from create_proxy until destroy_proxy, whatever happens to other proxies.
 using ProxyId = std::uint32_t;
 inline constexpr ProxyId null_proxy = std::numeric_limits<ProxyId>::max();
 
-// Static proxies never pair with each other.
+/// Static proxies never pair with each other.
 enum class ProxyKind : std::uint8_t { static_body, moving };
 
-// A candidate pair, always with a < b.
+/// A candidate pair, always with a < b.
 struct ProxyPair {
   ProxyId a = null_proxy;
   ProxyId b = null_proxy;
   bool operator==(const ProxyPair&) const = default;
 };
 
-// What changed in the pair set since the previous update_pairs().
+/// What changed in the pair set since the previous update_pairs().
 struct PairEvents {
   std::vector<ProxyPair> begun;
   std::vector<ProxyPair> ended;
 };
 
-// The interface both the sweep-and-prune and its brute-force oracle implement. Boxes are
-// stored fattened by a margin; move_proxy only changes the stored box when the tight box
-// leaves it, so slow bodies keep their pairs.
+/// The interface both the sweep-and-prune and its brute-force oracle implement. Boxes are
+/// stored fattened by a margin; move_proxy only changes the stored box when the tight box
+/// leaves it, so slow bodies keep their pairs.
 class Broadphase {
  public:
   virtual ~Broadphase() = default;
 
+  /// @brief Adds a box; its id stays valid until destroy_proxy.
+  /// @param tight the object's exact box (stored fattened by the margin)
+  /// @param kind static proxies never pair with each other
+  /// @param user_data carried along for the caller (user_data())
+  /// @throws InvalidArgumentError for a box with a non-finite coordinate or lower above upper
   virtual ProxyId create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data) = 0;
+  /// @throws InvalidArgumentError for an id that is not a live proxy
   virtual void destroy_proxy(ProxyId id) = 0;
-  // Returns true when the stored (fat) box changed.
+  /// @return true when the stored (fat) box changed.
+  /// @throws InvalidArgumentError for a dead id or a bad box, as create_proxy
   virtual bool move_proxy(ProxyId id, const Aabb& tight) = 0;
-  // Brings the pair set up to date: every pair of overlapping fat boxes, except static-static.
+  /// Brings the pair set up to date: every pair of overlapping fat boxes, except static-static.
   virtual void update_pairs(PairEvents& events) = 0;
 
-  // The current pair set, in no particular order.
+  /// The current pair set, in no particular order.
   virtual const std::vector<ProxyPair>& pairs() const = 0;
+  /// @throws InvalidArgumentError for an id that is not a live proxy
   virtual const Aabb& fat_aabb(ProxyId id) const = 0;
+  /// @throws InvalidArgumentError for an id that is not a live proxy
   virtual std::uint64_t user_data(ProxyId id) const = 0;
   virtual std::size_t proxy_count() const = 0;
 
-  // Appends every proxy whose fat box overlaps `box` / contains `point`.
+  /// @brief Appends every proxy whose fat box overlaps `box` / contains `point`.
+  /// @throws InvalidArgumentError for a bad box or a non-finite point
   virtual void query(const Aabb& box, std::vector<ProxyId>& out) const = 0;
   virtual void query_point(const Vec2& point, std::vector<ProxyId>& out) const = 0;
 };

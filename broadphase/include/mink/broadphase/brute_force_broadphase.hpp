@@ -7,8 +7,8 @@
 
 namespace mink {
 
-// The obviously-correct oracle: every update tests every pair of proxies and diffs the
-// result against the previous pair set. O(n^2) per update; for tests only.
+/// The obviously-correct oracle: every update tests every pair of proxies and diffs the
+/// result against the previous pair set. O(n^2) per update; for tests only.
 class BruteForceBroadphase final : public Broadphase {
  public:
   explicit BruteForceBroadphase(Real margin = 0.1);
@@ -18,7 +18,7 @@ class BruteForceBroadphase final : public Broadphase {
   bool move_proxy(ProxyId id, const Aabb& tight) override;
   void update_pairs(PairEvents& events) override;
 
-  // Sorted by (a, b).
+  /// Sorted by (a, b).
   const std::vector<ProxyPair>& pairs() const override { return pairs_; }
   const Aabb& fat_aabb(ProxyId id) const override;
   std::uint64_t user_data(ProxyId id) const override;

@@ -8,21 +8,21 @@
 
 namespace mink {
 
-// Sweep and prune over fat boxes. The boxes live in one persistent array sorted by
-// (band, lower bound on the sweep axis): the sweep axis is the axis of larger spread, and the
-// other axis is cut into bands a few boxes high so that a sweep only meets boxes near in both
-// axes (a single sweep over a 2D world meets O(sqrt n) boxes per query). Each box sits in
-// the band of its lower bound, so it is stored once. Boxes far larger than the typical one
-// are kept apart in a short list every query tests.
-//
-// Only proxies whose fat box changed (or that were created or destroyed) can begin or end
-// pairs, so update_pairs searches only for those: one pass over the pair list ends the pairs
-// with a touched member whose current boxes no longer overlap (O(pairs), which the engine
-// pays anyway to visit its contacts, and no index to keep), an insertion sort started at the
-// changed entries updates the array (frame coherence keeps it short), then sweeping the new boxes
-// finds the begun pairs, in array order so that each band's search resumes where the previous one
-// stopped. A pair is new exactly when the previous boxes did not overlap, so the pair list needs no
-// hash set.
+/// Sweep and prune over fat boxes. The boxes live in one persistent array sorted by
+/// (band, lower bound on the sweep axis): the sweep axis is the axis of larger spread, and the
+/// other axis is cut into bands a few boxes high so that a sweep only meets boxes near in both
+/// axes (a single sweep over a 2D world meets O(sqrt n) boxes per query). Each box sits in
+/// the band of its lower bound, so it is stored once. Boxes far larger than the typical one
+/// are kept apart in a short list every query tests.
+///
+/// Only proxies whose fat box changed (or that were created or destroyed) can begin or end
+/// pairs, so update_pairs searches only for those: one pass over the pair list ends the pairs
+/// with a touched member whose current boxes no longer overlap (O(pairs), which the engine
+/// pays anyway to visit its contacts, and no index to keep), an insertion sort started at the
+/// changed entries updates the array (frame coherence keeps it short), then sweeping the new boxes
+/// finds the begun pairs, in array order so that each band's search resumes where the previous one
+/// stopped. A pair is new exactly when the previous boxes did not overlap, so the pair list needs
+/// no hash set.
 class SweepAndPrune final : public Broadphase {
  public:
   explicit SweepAndPrune(Real margin = 0.1);
@@ -47,71 +47,71 @@ class SweepAndPrune final : public Broadphase {
   std::size_t rebuild_count() const { return rebuild_count_; }
 
  private:
-  // A box in (sweep axis, band axis) coordinates, with its sort key.
+  /// A box in (sweep axis, band axis) coordinates, with its sort key.
   struct Entry {
     std::uint64_t key;
     Real lo0, hi0, lo1, hi1;
     ProxyId id;
     std::uint32_t is_static;
   };
-  // What happened to a proxy since the last update_pairs.
+  /// What happened to a proxy since the last update_pairs.
   enum Touch : std::uint8_t { kMoved = 1, kCreated = 2, kDestroyed = 4 };
   static constexpr std::uint32_t kNoSlot = ~std::uint32_t{0};
   static constexpr std::uint32_t kOversizedBit = std::uint32_t{1} << 31;
 
   void touch(ProxyId id, std::uint8_t what);
   Entry make_entry(ProxyId id, const Aabb& box) const;
-  // Only the box of an entry: enough for overlap().
+  /// Only the box of an entry: enough for overlap().
   Entry oriented(const Aabb& box) const;
   bool is_oversized(const Entry& entry) const;
   std::uint32_t band_of(Real band_coordinate) const;
 
   static bool overlap(const Entry& x, const Entry& y);
-  // Calls visit(entry) for every stored entry overlapping `entry`'s box.
+  /// Calls visit(entry) for every stored entry overlapping `entry`'s box.
   template <typename Visit>
   void sweep(const Entry& entry, Visit&& visit) const;
 
   static const Entry* gallop(const Entry* first, const Entry* last, std::uint64_t key);
   template <typename Visit>
   void resume_sweep(const Entry& entry, Visit&& visit);
-  // Reports the pairs of m (whose entry is q) that sweep(q, visit) finds and that did not
-  // exist before.
+  /// Reports the pairs of m (whose entry is q) that sweep(q, visit) finds and that did not
+  /// exist before.
   template <typename Sweep>
   void report_begun(ProxyId m, const Entry& q, PairEvents& events, Sweep&& sweep);
 
-  // The slots of the touched proxies in entries_, ascending; `count` of them are expected.
+  /// The slots of the touched proxies in entries_, ascending; `count` of them are expected.
   void collect_touched_slots(std::size_t count, std::vector<std::uint32_t>& out) const;
   void find_ended(PairEvents& events);
   void update_structure();
   void find_begun(PairEvents& events);
   void remove_entry(ProxyId id);
   void place_entry(const Entry& entry);
-  // Widens the sweep reach for a new entry and counts it if it falls outside the bands.
+  /// Widens the sweep reach for a new entry and counts it if it falls outside the bands.
   void note_placed(const Entry& entry);
-  // Moves entries_[i] left to its place; true when it moved.
+  /// Moves entries_[i] left to its place; true when it moved.
   bool sink(std::size_t i, std::size_t& shifts);
   void sort_changed();
   void rebuild();
-  // Also refreshes band_begin_, which every change of entries_ invalidates.
+  /// Also refreshes band_begin_, which every change of entries_ invalidates.
   void recompute_slots();
   void find_band_starts();
 
   ProxyStore store_;
-  std::vector<ProxyPair> pairs_;  // the pair set; begun pairs appended, ended ones compacted away
+  std::vector<ProxyPair> pairs_;  ///< the pair set; begun pairs appended, ended ones compacted away
 
-  std::vector<Entry> entries_;             // sorted by key; boxes as of the last update
-  std::vector<std::uint32_t> band_begin_;  // per band: its first index in entries_, then n
-  std::vector<Entry> oversized_;           // unsorted; boxes as of the last update
-  std::vector<std::uint32_t> slot_;    // per id: index in entries_, or in oversized_ with the bit
-  std::vector<Aabb> committed_;        // per id: fat box as of the last update
-  std::vector<std::uint8_t> touched_;  // per id: Touch bits
+  std::vector<Entry> entries_;             ///< sorted by key; boxes as of the last update
+  std::vector<std::uint32_t> band_begin_;  ///< per band: its first index in entries_, then n
+  std::vector<Entry> oversized_;           ///< unsorted; boxes as of the last update
+  std::vector<std::uint32_t> slot_;    ///< per id: index in entries_, or in oversized_ with the bit
+  std::vector<Aabb> committed_;        ///< per id: fat box as of the last update
+  std::vector<std::uint8_t> touched_;  ///< per id: Touch bits
   std::vector<ProxyId> touched_ids_;
 
   // Scratch, kept to avoid allocating every step.
   std::vector<std::uint32_t> changed_slots_;
   std::vector<Entry> appended_;
   std::vector<std::uint32_t> query_slots_;
-  // Per band: where resume_sweep's last search there ended (valid while stamp matches).
+  /// Per band: where resume_sweep's last search there ended (valid while stamp matches).
   struct Cursor {
     std::uint64_t stamp = 0;
     std::uint64_t key = 0;
@@ -125,11 +125,11 @@ class SweepAndPrune final : public Broadphase {
   bool built_ = false;
   int sweep_axis_ = 0;
   Real band_origin_ = 0;
-  Real band_scale_ = 1;  // bands per unit length
+  Real band_scale_ = 1;  ///< bands per unit length
   std::uint32_t band_count_ = 1;
-  Real cap0_ = 0, cap1_ = 0;                // extents beyond which a box is oversized
-  Real max_extent0_ = 0, max_extent1_ = 0;  // largest extents among entries_
-  std::size_t clamped_count_ = 0;           // entries placed outside the band range
+  Real cap0_ = 0, cap1_ = 0;                ///< extents beyond which a box is oversized
+  Real max_extent0_ = 0, max_extent1_ = 0;  ///< largest extents among entries_
+  std::size_t clamped_count_ = 0;           ///< entries placed outside the band range
   std::size_t rebuild_count_ = 0;
 };
 

@@ -6,12 +6,15 @@
 
 namespace mink {
 
-// Throws NonFiniteInputError naming the first point with a NaN or infinite coordinate.
+/// @brief Checks that every coordinate is finite.
+/// @throws NonFiniteInputError naming the first point with a NaN or infinite coordinate.
 void require_finite(std::span<const Vec2> points);
 
-// The precondition every hull algorithm checks first: all coordinates finite (else
-// NonFiniteInputError with the point's index) and at least three distinct points not all on one
-// line (else DegenerateInputError). O(n); usually stops early on the second condition.
+/// @brief The precondition every hull algorithm checks first: all coordinates finite and at
+/// least three distinct points not all on one line. O(n); usually stops early on the second
+/// condition.
+/// @throws NonFiniteInputError with the point's index for a NaN or infinite coordinate
+/// @throws DegenerateInputError when the points are not three distinct, non-collinear ones
 void validate_hull_input(std::span<const Vec2> points);
 
 }  // namespace mink

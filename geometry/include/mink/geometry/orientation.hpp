@@ -7,17 +7,19 @@
 namespace mink {
 
 namespace detail {
-// Exact sign of det[b - a, c - a] for any finite doubles: floating-point expansions when no
-// product underflows or overflows, big-integer arithmetic otherwise.
+/// Exact sign of det[b - a, c - a] for any finite doubles: floating-point expansions when no
+/// product underflows or overflows, big-integer arithmetic otherwise.
 int orient2d_exact(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
-// The same sign by big-integer arithmetic alone: slow, obviously exact, the test oracle.
+/// The same sign by big-integer arithmetic alone: slow, obviously exact, the test oracle.
 int orient2d_big_integer(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
 }  // namespace detail
 
-// Sign of the turn a -> b -> c: +1 when c lies strictly left of the directed line a->b
-// (counter-clockwise), -1 when strictly right, 0 when the three points are collinear.
-// The sign is exact for all finite inputs: a floating-point filter answers when its error
-// bound allows, otherwise the determinant is evaluated exactly.
+/// @brief Sign of the turn a -> b -> c.
+/// @return +1 when c lies strictly left of the directed line a->b (counter-clockwise), -1 when
+/// strictly right, 0 when the three points are collinear.
+///
+/// The sign is exact for all finite inputs: a floating-point filter answers when its error
+/// bound allows, otherwise the determinant is evaluated exactly.
 inline int orient2d(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
   const Real det_left = (a.x() - c.x()) * (b.y() - c.y());
   const Real det_right = (a.y() - c.y()) * (b.x() - c.x());
@@ -36,13 +38,13 @@ inline int orient2d(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
   return detail::orient2d_exact(a, b, c);
 }
 
-// The plain floating-point determinant, with no guarantee on its sign. Tests use it to show
-// where the filter matters.
+/// The plain floating-point determinant, with no guarantee on its sign. Tests use it to show
+/// where the filter matters.
 inline Real orient2d_naive(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
 }
 
-// Lexicographic order on (x, y), the order every hull in Minkowski starts from.
+/// Lexicographic order on (x, y), the order every hull in Minkowski starts from.
 inline bool lex_less(const Vec2& p, const Vec2& q) noexcept {
   return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
 }
