@@ -1,6 +1,7 @@
 #pragma once
 
 #include <exception>
+#include <iosfwd>
 
 namespace mink::cli {
 
@@ -12,7 +13,7 @@ enum ExitCode : int {
   kDegenerate = 3,     // a point set with no area: fewer than 3 distinct non-collinear points
 };
 
-// Maps an exception from a command to its exit code and prints "mink: <message>" to stderr.
-int report_error(const std::exception& error);
+// Maps an exception from a command to its exit code and prints "mink: <message>" to `err`.
+int report_error(const std::exception& error, std::ostream& err);
 
 }  // namespace mink::cli

@@ -19,7 +19,8 @@ Real parse_number(std::string_view text, std::size_t& at, std::size_t line_numbe
                   const char* which) {
   const char* begin = text.data() + at;
   const char* end = text.data() + text.size();
-  if (begin < end && *begin == '+') ++begin;  // from_chars takes no leading '+'
+  // from_chars takes no leading '+'; skip one, but never let "+-1" or "++1" through.
+  if (begin + 1 < end && *begin == '+' && begin[1] != '-' && begin[1] != '+') ++begin;
   Real value = 0;
   const auto [stop, error] = std::from_chars(begin, end, value);
   if (error == std::errc::result_out_of_range) {

@@ -16,6 +16,11 @@ int run(int argc, const char* const* argv, Streams streams) {
   std::map<std::string, Action> actions;
   actions["hull"] = add_hull_command(app, streams);
   actions["demo"] = add_demo_command(app, streams);
+  actions["overlap"] = add_overlap_command(app, streams);
+#ifdef MINK_WITH_BOX2D
+  actions["crosscheck"] = add_crosscheck_command(app, streams);
+#endif
+  actions["paper"] = add_paper_command(app, streams);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -33,7 +38,7 @@ int run(int argc, const char* const* argv, Streams streams) {
     try {
       return actions.at(command->get_name())();
     } catch (const std::exception& error) {
-      return report_error(error);
+      return report_error(error, streams.err);
     }
   }
   return kBadInput;

@@ -4,8 +4,9 @@
 set -euo pipefail
 
 profile=${1:-build}
-build_pkgs=(build-essential cmake pkg-config libeigen3-dev libcli11-dev nlohmann-json3-dev libpng-dev libbox2d-dev)
-test_pkgs=(libgtest-dev libgmock-dev libcgal-dev libgmp-dev libmpfr-dev libbox2d-dev)
+build_pkgs=(build-essential cmake pkg-config libeigen3-dev libcli11-dev nlohmann-json3-dev libpng-dev libbox2d-dev
+            libosmesa6-dev libegl-dev libgl-dev libsdl2-dev)
+test_pkgs=(libgtest-dev libgmock-dev libcgal-dev libgmp-dev libmpfr-dev libbox2d-dev xvfb xauth ffmpeg)
 bench_pkgs=(libbenchmark-dev libcgal-dev libgmp-dev libmpfr-dev libqhull-dev gnuplot-nox)
 
 case "$profile" in

@@ -1,5 +1,6 @@
 #include "mink/broadphase/proxy_store.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -8,6 +9,10 @@
 namespace mink {
 
 namespace {
+
+// How many last steps ahead a moved box reaches, and the most it reaches in margins.
+constexpr Real kPrediction = 4;
+constexpr Real kPredictionLimit = 4;
 
 std::string describe(const Aabb& box) {
   return "[(" + std::to_string(box.lower.x()) + ", " + std::to_string(box.lower.y()) + "), (" +
@@ -47,7 +52,7 @@ ProxyId ProxyStore::create(const Aabb& tight, ProxyKind kind, std::uint64_t user
     throw InvalidArgumentError("create_proxy: unknown proxy kind " +
                                std::to_string(static_cast<int>(kind)));
   }
-  const Aabb fat = fattened(tight, "create_proxy");
+  const Aabb fat = fattened(tight, Vec2::Zero(), "create_proxy");
   ProxyId id;
   if (!free_ids_.empty()) {
     id = free_ids_.back();
@@ -56,11 +61,13 @@ ProxyId ProxyStore::create(const Aabb& tight, ProxyKind kind, std::uint64_t user
     if (alive_.size() >= null_proxy) throw InvalidArgumentError("create_proxy: too many proxies");
     id = static_cast<ProxyId>(alive_.size());
     fat_.emplace_back();
+    last_lower_.emplace_back();
     kind_.push_back(kind);
     user_data_.push_back(0);
     alive_.push_back(0);
   }
   fat_[id] = fat;
+  last_lower_[id] = tight.lower;
   kind_[id] = kind;
   user_data_[id] = user_data;
   alive_[id] = 1;
@@ -85,13 +92,26 @@ void ProxyStore::destroy(ProxyId id) {
 bool ProxyStore::move(ProxyId id, const Aabb& tight) {
   check_alive(id, "move_proxy");
   check_box(tight, "move_proxy");
+  const Vec2 step = tight.lower - last_lower_[id];
+  last_lower_[id] = tight.lower;
   if (fat_[id].contains(tight)) return false;
-  fat_[id] = fattened(tight, "move_proxy");
+  fat_[id] = fattened(tight, step, "move_proxy");
   return true;
 }
 
-Aabb ProxyStore::fattened(const Aabb& tight, std::string_view operation) const {
-  const Aabb fat = tight.fattened(margin_);
+Aabb ProxyStore::fattened(const Aabb& tight, const Vec2& step, std::string_view operation) const {
+  Aabb fat = tight.fattened(margin_);
+  // Reach ahead along the last step, so a steadily moving body keeps its box for longer. A
+  // few margins at most: a teleport is no motion to predict.
+  const Real most = kPredictionLimit * margin_;
+  for (int axis = 0; axis < 2; ++axis) {
+    const Real ahead = std::min(kPrediction * std::abs(step[axis]), most);
+    if (step[axis] < 0) {
+      fat.lower[axis] -= ahead;
+    } else {
+      fat.upper[axis] += ahead;
+    }
+  }
   if (!fat.lower.allFinite() || !fat.upper.allFinite()) {
     throw InvalidArgumentError(std::string(operation) + ": box " + describe(tight) +
                                " overflows when fattened by the margin");

@@ -26,11 +26,12 @@ constexpr std::size_t kSampleSize = 1025;
 std::uint32_t sweep_key(Real x) {
   constexpr Real kFloatMax = std::numeric_limits<float>::max();
   const Real clamped = std::clamp(x, -kFloatMax, kFloatMax);
-  float f = static_cast<float>(clamped);
-  if (static_cast<Real>(f) > clamped) f = std::nextafter(f, -std::numeric_limits<float>::max());
-  f += 0.0f;  // -0 and +0 must map to one key
+  const float f = static_cast<float>(clamped) + 0.0f;  // -0 and +0 must map to one key
   const auto bits = std::bit_cast<std::uint32_t>(f);
-  return (bits & 0x80000000u) != 0 ? ~bits : (bits | 0x80000000u);
+  const std::uint32_t key = (bits & 0x80000000u) != 0 ? ~bits : (bits | 0x80000000u);
+  // Consecutive floats have consecutive keys, so one less is the float below. f is above
+  // -FLT_MAX when it rounded up, so this cannot wrap.
+  return static_cast<Real>(f) > clamped ? key - 1 : key;
 }
 
 std::uint64_t make_key(std::uint32_t band, std::uint32_t low) {
@@ -94,14 +95,19 @@ std::uint32_t SweepAndPrune::band_of(Real band_coordinate) const {
   return static_cast<std::uint32_t>(t);
 }
 
-SweepAndPrune::Entry SweepAndPrune::make_entry(ProxyId id, const Aabb& box) const {
+SweepAndPrune::Entry SweepAndPrune::oriented(const Aabb& box) const {
   const int s = sweep_axis_;
   const int b = 1 - s;
-  Entry entry;
+  Entry entry{};
   entry.lo0 = box.lower[s];
   entry.hi0 = box.upper[s];
   entry.lo1 = box.lower[b];
   entry.hi1 = box.upper[b];
+  return entry;
+}
+
+SweepAndPrune::Entry SweepAndPrune::make_entry(ProxyId id, const Aabb& box) const {
+  Entry entry = oriented(box);
   entry.key = make_key(band_of(entry.lo1), sweep_key(entry.lo0));
   entry.id = id;
   entry.is_static = id == null_proxy ? 0 : static_cast<std::uint32_t>(store_.is_static(id));
@@ -110,6 +116,10 @@ SweepAndPrune::Entry SweepAndPrune::make_entry(ProxyId id, const Aabb& box) cons
 
 bool SweepAndPrune::is_oversized(const Entry& entry) const {
   return entry.hi0 - entry.lo0 > cap0_ || entry.hi1 - entry.lo1 > cap1_;
+}
+
+bool SweepAndPrune::overlap(const Entry& x, const Entry& y) {
+  return x.lo0 <= y.hi0 && y.lo0 <= x.hi0 && x.lo1 <= y.hi1 && y.lo1 <= x.hi1;
 }
 
 template <typename Visit>
@@ -123,36 +133,96 @@ void SweepAndPrune::sweep(const Entry& q, Visit&& visit) const {
     const std::uint32_t low = sweep_key(below(q.lo0 - reach0));
     const std::uint32_t high = sweep_key(q.hi0);
     const auto by_key = [](const Entry& e, std::uint64_t key) { return e.key < key; };
-    auto it = entries_.begin();
-    const auto end = entries_.end();
+    const Entry* const entries = entries_.data();
     for (std::uint32_t band = first_band; band <= last_band; ++band) {
-      it = std::lower_bound(it, end, make_key(band, low), by_key);
-      if (it == end) break;
-      // Skips empty bands in one step.
-      const auto found_band = static_cast<std::uint32_t>(it->key >> 32);
-      if (found_band > band) {
-        if (found_band > last_band) break;
-        band = found_band;
-        it = std::lower_bound(it, end, make_key(band, low), by_key);
-      }
+      const Entry* const band_end = entries + band_begin_[band + 1];
+      const Entry* it =
+          std::lower_bound(entries + band_begin_[band], band_end, make_key(band, low), by_key);
       const std::uint64_t stop = make_key(band, high);
-      for (; it != end && it->key <= stop; ++it) {
-        if (it->lo0 <= q.hi0 && q.lo0 <= it->hi0 && it->lo1 <= q.hi1 && q.lo1 <= it->hi1) {
-          visit(*it);
-        }
+      for (; it != band_end && it->key <= stop; ++it) {
+        if (overlap(*it, q)) visit(*it);
       }
     }
   }
   for (const Entry& e : oversized_) {
-    if (e.lo0 <= q.hi0 && q.lo0 <= e.hi0 && e.lo1 <= q.hi1 && q.lo1 <= e.hi1) visit(e);
+    if (overlap(e, q)) visit(e);
   }
+}
+
+// The first entry in [first, last) with a key not below `key`, when none before `first` is:
+// a doubling search from `first`, cheap when the answer is near.
+const SweepAndPrune::Entry* SweepAndPrune::gallop(const Entry* first, const Entry* last,
+                                                  std::uint64_t key) {
+  const auto by_key = [](const Entry& e, std::uint64_t k) { return e.key < k; };
+  std::ptrdiff_t step = 1;
+  while (first != last && first->key < key) {
+    if (last - first <= step) return std::lower_bound(first + 1, last, key, by_key);
+    const Entry* const probe = first + step;
+    if (probe->key >= key) return std::lower_bound(first + 1, probe, key, by_key);
+    first = probe + 1;
+    step *= 2;
+  }
+  return first;
+}
+
+// sweep() over the banded entries for queries that come in array order: each band keeps
+// where the previous query's search ended and searches onward from there. A query whose
+// search bound lies below the kept one (rounding can reorder equal keys) starts afresh.
+template <typename Visit>
+void SweepAndPrune::resume_sweep(const Entry& q, Visit&& visit) {
+  const Real reach0 = max_extent0_ * (1 + kReachSlack);
+  const Real reach1 = max_extent1_ * (1 + kReachSlack);
+  const std::uint32_t first_band = band_of(below(q.lo1 - reach1));
+  const std::uint32_t last_band = band_of(q.hi1);
+  const std::uint32_t low = sweep_key(below(q.lo0 - reach0));
+  const std::uint32_t high = sweep_key(q.hi0);
+  const Entry* const entries = entries_.data();
+  for (std::uint32_t band = first_band; band <= last_band; ++band) {
+    const Entry* const band_end = entries + band_begin_[band + 1];
+    const std::uint64_t start = make_key(band, low);
+    Cursor& cursor = cursors_[band];
+    if (cursor.stamp != cursor_stamp_ || start < cursor.key) {
+      cursor = {cursor_stamp_, start, band_begin_[band]};
+    }
+    const Entry* it = gallop(entries + cursor.index, band_end, start);
+    cursor.key = start;
+    cursor.index = static_cast<std::uint32_t>(it - entries);
+    const std::uint64_t stop = make_key(band, high);
+    for (; it != band_end && it->key <= stop; ++it) {
+      if (overlap(*it, q)) visit(*it);
+    }
+  }
+  for (const Entry& e : oversized_) {
+    if (overlap(e, q)) visit(e);
+  }
+}
+
+void SweepAndPrune::find_band_starts() {
+  band_begin_.resize(std::size_t{band_count_} + 1);
+  const std::size_t n = entries_.size();
+  if (std::size_t{band_count_} * 16 > n) {
+    // Many bands for few entries: one pass.
+    std::size_t i = 0;
+    for (std::uint32_t band = 0; band < band_count_; ++band) {
+      while (i < n && (entries_[i].key >> 32) < band) ++i;
+      band_begin_[band] = static_cast<std::uint32_t>(i);
+    }
+  } else {
+    for (std::uint32_t band = 0; band < band_count_; ++band) {
+      band_begin_[band] = static_cast<std::uint32_t>(
+          std::lower_bound(entries_.begin(), entries_.end(), make_key(band, 0),
+                           [](const Entry& e, std::uint64_t key) { return e.key < key; }) -
+          entries_.begin());
+    }
+  }
+  band_begin_[band_count_] = static_cast<std::uint32_t>(n);
 }
 
 void SweepAndPrune::update_pairs(PairEvents& events) {
   events.begun.clear();
   events.ended.clear();
   if (touched_ids_.empty()) return;
-  if (built_) find_ended(events);
+  find_ended(events);
   update_structure();
   find_begun(events);
   for (const ProxyId id : touched_ids_) {
@@ -163,55 +233,93 @@ void SweepAndPrune::update_pairs(PairEvents& events) {
   store_.release_destroyed();
 }
 
-// Pairs of the previous boxes that no longer overlap. The array still holds the previous
-// boxes, so each touched proxy sweeps its own previous box through it.
+// Pairs that no longer overlap. Only a pair with a touched member can end, and testing it on
+// the current boxes is one lookup, so one pass over the pair list replaces a search with
+// each touched proxy's previous box; the survivors are compacted in place.
 void SweepAndPrune::find_ended(PairEvents& events) {
-  for (const ProxyId m : touched_ids_) {
-    const std::uint8_t touch_m = touched_[m];
-    if ((touch_m & kCreated) != 0) continue;
-    const std::uint32_t slot = slot_[m];
-    const Entry& q =
-        (slot & kOversizedBit) != 0 ? oversized_[slot & ~kOversizedBit] : entries_[slot];
-    sweep(q, [&](const Entry& e) {
-      const ProxyId o = e.id;
-      if (o == m || (q.is_static != 0 && e.is_static != 0)) return;
-      const std::uint8_t touch_o = touched_[o];
-      // A touched partner sweeps too; the smaller id reports the pair.
-      if (touch_o != 0 && o < m) return;
-      const bool ended = (touch_m & kDestroyed) != 0 || (touch_o & kDestroyed) != 0 ||
-                         !store_.fat(m).overlaps(store_.fat(o));
-      if (ended) {
-        const ProxyPair pair = ordered(m, o);
-        pairs_.erase(pair);
-        events.ended.push_back(pair);
-      }
-    });
+  std::size_t kept = 0;
+  const std::uint8_t* const touched = touched_.data();
+  for (const ProxyPair pair : pairs_) {
+    const std::uint8_t touch = touched[pair.a] | touched[pair.b];
+    // Tested whether touched or not: a branch on the touch would be mispredicted often.
+    const bool apart = !store_.fat(pair.a).overlaps(store_.fat(pair.b));
+    const bool ended = touch != 0 && ((touch & kDestroyed) != 0 || apart);
+    pairs_[kept] = pair;
+    kept += ended ? 0 : 1;
+    if (ended) events.ended.push_back(pair);
   }
+  pairs_.resize(kept);
 }
 
 // Pairs of the new boxes that did not overlap before (or involve a new proxy).
-void SweepAndPrune::find_begun(PairEvents& events) {
-  for (const ProxyId m : touched_ids_) {
-    const std::uint8_t touch_m = touched_[m];
-    if ((touch_m & kDestroyed) != 0) continue;
-    const std::uint32_t slot = slot_[m];
-    const Entry& q =
-        (slot & kOversizedBit) != 0 ? oversized_[slot & ~kOversizedBit] : entries_[slot];
-    const bool m_new = (touch_m & kCreated) != 0;
-    sweep(q, [&](const Entry& e) {
-      const ProxyId o = e.id;
-      if (o == m || (q.is_static != 0 && e.is_static != 0)) return;
-      const std::uint8_t touch_o = touched_[o];
-      if (touch_o != 0 && o < m) return;
-      const bool existed =
-          !m_new && (touch_o & kCreated) == 0 && committed_[m].overlaps(committed_[o]);
-      if (!existed) {
-        const ProxyPair pair = ordered(m, o);
-        pairs_.insert(pair);
-        events.begun.push_back(pair);
-      }
-    });
+void SweepAndPrune::collect_touched_slots(std::size_t count,
+                                          std::vector<std::uint32_t>& out) const {
+  out.clear();
+  // A pass over the array beats sorting the slots once a fair share of the entries is
+  // touched.
+  if (count * 8 > entries_.size()) {
+    for (std::uint32_t i = 0; i < entries_.size(); ++i) {
+      if (touched_[entries_[i].id] != 0) out.push_back(i);
+    }
+    return;
   }
+  for (const ProxyId m : touched_ids_) {
+    if ((touched_[m] & kDestroyed) == 0 && (slot_[m] & kOversizedBit) == 0) {
+      out.push_back(slot_[m]);
+    }
+  }
+  std::sort(out.begin(), out.end());
+}
+
+void SweepAndPrune::find_begun(PairEvents& events) {
+  // Banded entries are searched in array order, so each band's search resumes where the
+  // previous one stopped; oversized ones sweep on their own.
+  std::size_t banded = 0;
+  for (const ProxyId m : touched_ids_) {
+    if ((touched_[m] & kDestroyed) != 0) continue;
+    const std::uint32_t slot = slot_[m];
+    if ((slot & kOversizedBit) != 0) {
+      report_begun(m, oversized_[slot & ~kOversizedBit], events,
+                   [&](const Entry& q, auto&& v) { sweep(q, v); });
+    } else {
+      ++banded;
+    }
+  }
+  collect_touched_slots(banded, query_slots_);
+  ++cursor_stamp_;
+  if (cursors_.size() < band_count_) cursors_.resize(band_count_);
+  // The previous boxes are indexed by id, so in array order they are scattered: fetched a
+  // few queries ahead.
+  constexpr std::size_t kAhead = 4;
+  const std::size_t count = query_slots_.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    if (k + kAhead < count) {
+      __builtin_prefetch(&committed_[entries_[query_slots_[k + kAhead]].id]);
+    }
+    const Entry& q = entries_[query_slots_[k]];
+    report_begun(q.id, q, events, [&](const Entry& query, auto&& v) { resume_sweep(query, v); });
+  }
+}
+
+template <typename Sweep>
+void SweepAndPrune::report_begun(ProxyId m, const Entry& q, PairEvents& events, Sweep&& sweep) {
+  const bool m_new = (touched_[m] & kCreated) != 0;
+  const Entry before = m_new ? q : oriented(committed_[m]);
+  sweep(q, [&](const Entry& e) {
+    const ProxyId o = e.id;
+    if (o == m || (q.is_static != 0 && e.is_static != 0)) return;
+    const std::uint8_t touch_o = touched_[o];
+    if (touch_o != 0 && o < m) return;
+    // An untouched partner's box in the array is also its previous box.
+    const bool existed =
+        !m_new && (touch_o != 0 ? (touch_o & kCreated) == 0 && committed_[m].overlaps(committed_[o])
+                                : overlap(before, e));
+    if (!existed) {
+      const ProxyPair pair = ordered(m, o);
+      pairs_.push_back(pair);
+      events.begun.push_back(pair);
+    }
+  });
 }
 
 void SweepAndPrune::remove_entry(ProxyId id) {
@@ -314,7 +422,7 @@ void SweepAndPrune::sort_changed() {
   if (dead_count_ == 0 && appended_.empty()) {
     // Only the changed entries and their right neighbours can be out of order, and a shift
     // at position i can only disorder position i + 1.
-    std::sort(changed_slots_.begin(), changed_slots_.end());
+    collect_touched_slots(changed_slots_.size(), changed_slots_);
     constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
     std::size_t listed = 0;
     std::size_t follow = kNone;
@@ -329,7 +437,10 @@ void SweepAndPrune::sort_changed() {
       follow = was_listed || shifted ? i + 1 : kNone;
       if (shifts > budget) break;
     }
-    if (shifts <= budget) return;
+    if (shifts <= budget) {
+      find_band_starts();
+      return;
+    }
   } else {
     std::size_t kept = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -359,6 +470,7 @@ void SweepAndPrune::sort_changed() {
 }
 
 void SweepAndPrune::recompute_slots() {
+  find_band_starts();
   for (std::size_t i = 0; i < entries_.size(); ++i) {
     slot_[entries_[i].id] = static_cast<std::uint32_t>(i);
   }

@@ -104,49 +104,50 @@ std::optional<ShapeRayHit> World::ray_cast(const Vec2& origin, const Vec2& trans
 
 void World::draw(DebugDraw& draw) const {
   const WorldState& w = *state_;
-  const DrawColor static_color{0.5f, 0.9f, 0.5f, 1}, kinematic_color{0.5f, 0.5f, 0.9f, 1},
+  const Color static_color{0.5f, 0.9f, 0.5f, 1}, kinematic_color{0.5f, 0.5f, 0.9f, 1},
       dynamic_color{0.9f, 0.7f, 0.7f, 1}, sleeping_color{0.6f, 0.6f, 0.6f, 1},
       aabb_color{0.9f, 0.3f, 0.9f, 1}, point_color{1, 0.2f, 0.2f, 1},
       normal_color{0.9f, 0.9f, 0.3f, 1}, pair_color{0.3f, 0.9f, 0.9f, 1},
       velocity_color{1, 1, 1, 1};
   std::vector<Vec2> polygon;
-  if (draw.flags & DebugDraw::shapes) {
+  if (draw.layers & draw_shapes) {
     for (const detail::Shape& s : w.shapes) {
       if (!s.alive) continue;
       const detail::Body& b = w.bodies[s.body];
       polygon.clear();
       for (const Vec2& v : s.hull->vertices()) polygon.push_back(b.pose().apply(v));
-      DrawColor color = b.type == BodyType::static_body ? static_color
+      Color color = b.type == BodyType::static_body ? static_color
                         : b.type == BodyType::kinematic ? kinematic_color
                                                         : dynamic_color;
-      if ((draw.flags & DebugDraw::sleeping) && b.type == BodyType::dynamic && !b.awake) {
+      if ((draw.layers & draw_sleep_state) && b.type == BodyType::dynamic && !b.awake) {
         color = sleeping_color;
       }
-      draw.draw_polygon(polygon, color, true);
+      const Color outline{color.r * 0.6f, color.g * 0.6f, color.b * 0.6f, 1};
+      draw.draw_polygon(polygon, color, outline);
     }
   }
-  if (draw.flags & DebugDraw::aabbs) {
+  if (draw.layers & draw_aabbs) {
     for (const detail::Shape& s : w.shapes) {
       if (!s.alive) continue;
       const Aabb& box = w.broadphase.fat_aabb(s.proxy);
       const Vec2 corners[4] = {box.lower, Vec2(box.upper.x(), box.lower.y()), box.upper,
                                Vec2(box.lower.x(), box.upper.y())};
-      draw.draw_polygon(corners, aabb_color, false);
+      draw.draw_polygon(corners, Color{0, 0, 0, 0}, aabb_color);
     }
   }
-  if (draw.flags & DebugDraw::broadphase_pairs) {
+  if (draw.layers & draw_broadphase_pairs) {
     for (const ProxyPair& pair : w.broadphase.pairs()) {
       const Aabb& a = w.broadphase.fat_aabb(pair.a);
       const Aabb& b = w.broadphase.fat_aabb(pair.b);
       draw.draw_segment((a.lower + a.upper) / 2, (b.lower + b.upper) / 2, pair_color);
     }
   }
-  if (draw.flags & (DebugDraw::contact_points | DebugDraw::contact_normals)) {
+  if (draw.layers & (draw_contact_points | draw_contact_normals)) {
     for (const detail::Contact& c : w.contacts) {
       for (int j = 0; j < c.manifold.point_count; ++j) {
         const Vec2& p = c.manifold.points[static_cast<std::size_t>(j)].point;
-        if (draw.flags & DebugDraw::contact_points) draw.draw_point(p, 4, point_color);
-        if (draw.flags & DebugDraw::contact_normals) {
+        if (draw.layers & draw_contact_points) draw.draw_point(p, 4, point_color);
+        if (draw.layers & draw_contact_normals) {
           draw.draw_segment(p, p + 0.3 * c.manifold.normal, normal_color);
         }
       }
@@ -154,10 +155,10 @@ void World::draw(DebugDraw& draw) const {
   }
   for (const detail::Body& b : w.bodies) {
     if (!b.alive || b.type == BodyType::static_body) continue;
-    if (draw.flags & DebugDraw::velocities) {
+    if (draw.layers & draw_velocities) {
       draw.draw_segment(b.center, b.center + w.def.time_step * 10 * b.velocity, velocity_color);
     }
-    if (draw.flags & DebugDraw::centers_of_mass) draw.draw_point(b.center, 3, velocity_color);
+    if (draw.layers & draw_centers_of_mass) draw.draw_point(b.center, 3, velocity_color);
   }
 }
 

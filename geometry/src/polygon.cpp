@@ -3,6 +3,7 @@
 #include <string>
 
 #include "mink/error.hpp"
+#include "mink/geometry/orientation.hpp"
 
 namespace mink {
 
@@ -18,10 +19,30 @@ Real signed_area(std::span<const Vec2> polygon) {
   return twice_area / 2;
 }
 
+namespace {
+
+bool all_on_one_line(std::span<const Vec2> polygon) {
+  std::size_t second = 1;
+  while (second < polygon.size() && polygon[second] == polygon[0]) ++second;
+  if (second == polygon.size()) return true;
+  for (std::size_t i = second + 1; i < polygon.size(); ++i) {
+    if (orient2d(polygon[0], polygon[second], polygon[i]) != 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 AreaProperties area_properties(std::span<const Vec2> polygon) {
   if (polygon.size() < 3) {
     throw DegenerateInputError("a polygon needs at least 3 vertices, got " +
                                std::to_string(polygon.size()));
+  }
+  // Rounding can leave a small nonzero area for vertices that lie exactly on one line, so
+  // flatness is decided by the exact predicate, not by the computed area.
+  if (all_on_one_line(polygon)) {
+    throw DegenerateInputError("polygon of " + std::to_string(polygon.size()) +
+                               " vertices has zero area (all on one line)");
   }
   // Fan of triangles (origin, a, b) about the first vertex: the shoelace terms of eq. 3 with
   // the origin moved to that vertex, which keeps far-from-origin polygons precise.

@@ -1,6 +1,8 @@
 #include "mink/narrowphase/gjk_distance.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "pair_frame.hpp"
 
@@ -13,11 +15,11 @@ using detail::cross;
 // Barycentric weights of the simplex's point nearest the origin, after dropping the vertices
 // not needed to express it (Voronoi regions of the segment or triangle).
 struct Reduced {
-  Simplex simplex;
+  detail::LocalSimplex simplex;
   std::array<Real, 3> weight{};
 };
 
-void keep(Reduced& r, const Simplex& s, std::initializer_list<int> which,
+void keep(Reduced& r, const detail::LocalSimplex& s, std::initializer_list<int> which,
           std::initializer_list<Real> weights) {
   r.simplex.count = 0;
   Real sum = 0;
@@ -31,7 +33,7 @@ void keep(Reduced& r, const Simplex& s, std::initializer_list<int> which,
   }
 }
 
-Reduced reduce(const Simplex& s) {
+Reduced reduce(const detail::LocalSimplex& s) {
   Reduced r;
   const Vec2& w1 = s.vertices[0].point;
   if (s.count == 1) {
@@ -91,19 +93,21 @@ Reduced reduce(const Simplex& s) {
   return r;
 }
 
-Vec2 combine(const Reduced& r, Vec2 SimplexVertex::*member) {
+// The weighted sum of what `at` gives for each vertex of the reduced simplex.
+template <typename At>
+Vec2 combine(const Reduced& r, At at) {
   Vec2 sum(0, 0);
   for (int i = 0; i < r.simplex.count; ++i) {
-    sum += r.weight[static_cast<std::size_t>(i)] *
-           (r.simplex.vertices[static_cast<std::size_t>(i)].*member);
+    const auto k = static_cast<std::size_t>(i);
+    sum += r.weight[k] * at(r.simplex.vertices[k]);
   }
   return sum;
 }
 
 // Start from the cached vertex pairs when they are still valid indices, else from the support
 // point along the centroid direction.
-Simplex initial_simplex(const detail::PairFrame& frame, const SimplexCache* cache) {
-  Simplex s;
+detail::LocalSimplex initial_simplex(const detail::PairFrame& frame, const SimplexCache* cache) {
+  detail::LocalSimplex s;
   if (cache != nullptr && cache->count > 0 && cache->count <= 3) {
     for (int i = 0; i < cache->count; ++i) {
       const auto k = static_cast<std::size_t>(i);
@@ -112,7 +116,7 @@ Simplex initial_simplex(const detail::PairFrame& frame, const SimplexCache* cach
       if (ia >= frame.a().size() || ib >= frame.b().size()) return initial_simplex(frame, nullptr);
       bool repeated = false;
       for (int j = 0; j < s.count; ++j) {
-        const SimplexVertex& v = s.vertices[static_cast<std::size_t>(j)];
+        const detail::LocalVertex& v = s.vertices[static_cast<std::size_t>(j)];
         repeated = repeated || (v.index_a == ia && v.index_b == ib);
       }
       if (!repeated) s.vertices[static_cast<std::size_t>(s.count++)] = frame.vertex(ia, ib);
@@ -132,7 +136,9 @@ DistanceResult gjk_distance(const PreparedHull& a, const Pose& pose_a, const Pre
                             const Pose& pose_b, SimplexCache* cache) {
   const detail::PairFrame frame(a, pose_a, b, pose_b);
   DistanceResult result;
-  Simplex s = initial_simplex(frame, cache);
+  detail::LocalSimplex s = initial_simplex(frame, cache);
+  // A cold start took one support point; cached vertices cost none.
+  result.iterations = cache != nullptr && cache->count > 0 ? 0 : 1;
   Reduced r;
   const int cap = static_cast<int>(2 * (a.size() + b.size())) + 16;
   bool overlap = false;
@@ -167,11 +173,11 @@ DistanceResult gjk_distance(const PreparedHull& a, const Pose& pose_a, const Pre
       break;
     }
     d = detail::rescaled_direction(d);
-    const SimplexVertex w = frame.support(d);
+    const detail::LocalVertex w = frame.support(d);
     ++result.iterations;
     bool repeated = false;
     for (int i = 0; i < s.count; ++i) {
-      const SimplexVertex& v = s.vertices[static_cast<std::size_t>(i)];
+      const detail::LocalVertex& v = s.vertices[static_cast<std::size_t>(i)];
       repeated = repeated || (v.index_a == w.index_a && v.index_b == w.index_b);
     }
     if (repeated) break;
@@ -181,13 +187,15 @@ DistanceResult gjk_distance(const PreparedHull& a, const Pose& pose_a, const Pre
     s.vertices[static_cast<std::size_t>(s.count++)] = w;
   }
 
-  const Vec2 local_a = combine(r, &SimplexVertex::a);
-  const Vec2 local_b = combine(r, &SimplexVertex::b);
+  const Vec2 local_a =
+      combine(r, [&](const detail::LocalVertex& v) { return Vec2(a.vertices()[v.index_a]); });
+  const Vec2 local_b =
+      combine(r, [&](const detail::LocalVertex& v) { return frame.b_vertex(v.index_b); });
   result.overlap = overlap;
   result.point_a = pose_a.apply(local_a);
   result.point_b = pose_a.apply(local_b);
   if (!overlap) {
-    const Vec2 p = combine(r, &SimplexVertex::point);
+    const Vec2 p = combine(r, [](const detail::LocalVertex& v) { return v.point; });
     Vec2 gap = -p;
     if (s.count == 2) {
       // Distance to the segment's line: exact up to one rounding per operation, whereas |p|
@@ -204,16 +212,33 @@ DistanceResult gjk_distance(const PreparedHull& a, const Pose& pose_a, const Pre
       result.overlap = true;
     }
   }
-  result.simplex = frame.to_world(s);
-  if (cache != nullptr) {
-    cache->count = s.count;
-    for (int i = 0; i < s.count; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      cache->index_a[k] = s.vertices[k].index_a;
-      cache->index_b[k] = s.vertices[k].index_b;
+  result.simplex = detail::PairFrame::indices(s);
+  if (cache != nullptr) *cache = result.simplex;
+  return result;
+}
+
+BruteDistance hull_distance_brute(std::span<const Vec2> a, std::span<const Vec2> b) {
+  BruteDistance best{std::numeric_limits<Real>::infinity(), Vec2(0, 0)};
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::span<const Vec2> p = pass == 0 ? a : b;
+    const std::span<const Vec2> q = pass == 0 ? b : a;
+    for (const Vec2& v : p) {
+      for (std::size_t i = 0; i < q.size(); ++i) {
+        const Vec2& s0 = q[i];
+        const Vec2 e = q[(i + 1) % q.size()] - s0;
+        const Real len2 = e.squaredNorm();
+        const Real t = len2 > 0 ? std::clamp((v - s0).dot(e) / len2, Real(0), Real(1)) : 0;
+        const Vec2 gap = v - (s0 + t * e);  // from q's nearest point to v
+        const Real d = gap.norm();
+        if (d < best.distance) {
+          best.distance = d;
+          const Vec2 u = d > 0 ? Vec2(gap / d) : Vec2(0, 0);
+          best.normal = pass == 0 ? Vec2(-u) : u;  // v on A: from B's point to A's
+        }
+      }
     }
   }
-  return result;
+  return best;
 }
 
 }  // namespace mink

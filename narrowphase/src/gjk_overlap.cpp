@@ -16,33 +16,28 @@ Vec2 perpendicular_towards(const Vec2& p, const Vec2& q, int origin_side) {
   return origin_side > 0 ? Vec2(-e.y(), e.x()) : Vec2(e.y(), -e.x());
 }
 
-}  // namespace
+enum class Outcome { overlap, apart, cap };
 
-OverlapResult gjk_overlap(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
-                          const Pose& pose_b) {
-  const detail::PairFrame frame(a, pose_a, b, pose_b);
-  OverlapResult result;
-  Simplex s;
-  auto finish = [&](bool overlap, const Vec2& direction) {
-    result.overlap = overlap;
-    if (!overlap) result.separating_direction = pose_a.rotation.apply(direction);
-    result.simplex = frame.to_world(s);
-    return result;
-  };
-
+// The paper's loop on A - B in A's frame. On `apart`, `separating` is a direction along which
+// A - B lies wholly below zero.
+Outcome run_gjk(const detail::PairFrame& frame, detail::LocalSimplex& s, int& iterations,
+                Vec2& separating) {
   // Eq. 2: from centroid to centroid. Equal centroids: any direction serves.
-  Vec2 d = frame.relative().apply(b.centroid()) - a.centroid();
+  Vec2 d = frame.relative().apply(frame.b().centroid()) - frame.a().centroid();
   if (d.x() == 0 && d.y() == 0) d = Vec2(1, 0);
-  const int cap = static_cast<int>(2 * (a.size() + b.size())) + 16;
-  while (result.iterations < cap) {
+  const int cap = static_cast<int>(2 * (frame.a().size() + frame.b().size())) + 16;
+  while (iterations < cap) {
     d = detail::rescaled_direction(d);
-    const SimplexVertex v = frame.support(d);
-    ++result.iterations;
+    const detail::LocalVertex v = frame.support(d);
+    ++iterations;
     // A - B lies in {x : x.d <= v.d}: if that excludes the origin, the hulls are apart.
-    if (v.point.dot(d) < 0) return finish(false, d);
+    if (v.point.dot(d) < 0) {
+      separating = d;
+      return Outcome::apart;
+    }
     s.vertices[static_cast<std::size_t>(s.count++)] = v;
     if (s.count == 1) {
-      if (v.point.x() == 0 && v.point.y() == 0) return finish(true, d);  // touching at a vertex
+      if (v.point.x() == 0 && v.point.y() == 0) return Outcome::overlap;  // touching at a vertex
       d = -v.point;
       continue;
     }
@@ -52,7 +47,7 @@ OverlapResult gjk_overlap(const PreparedHull& a, const Pose& pose_a, const Prepa
       const int side = orient2d(newest, older, kOrigin);
       // Collinear: the origin lies between the two points (older.d < 0 <= newest.d), so on
       // the segment: touching or overlapping.
-      if (side == 0) return finish(true, d);
+      if (side == 0) return Outcome::overlap;
       d = perpendicular_towards(newest, older, side);
       continue;
     }
@@ -68,7 +63,7 @@ OverlapResult gjk_overlap(const PreparedHull& a, const Pose& pose_a, const Prepa
       s.vertices[1] = s.vertices[2];
       s.count = 2;
       const int side = orient2d(pa, pb, kOrigin);
-      if (side == 0) return finish(true, d);
+      if (side == 0) return Outcome::overlap;
       d = perpendicular_towards(s.vertices[1].point, s.vertices[0].point, side);
       continue;
     }
@@ -93,13 +88,33 @@ OverlapResult gjk_overlap(const PreparedHull& a, const Pose& pose_a, const Prepa
       d = perpendicular_towards(pb, pc, side_bc);
       continue;
     }
-    return finish(true, d);  // inside or on the boundary of the triangle
+    return Outcome::overlap;  // inside or on the boundary of the triangle
   }
-  result.reached_iteration_cap = true;
-  const Pose a_to_b = detail::inverse(frame.relative());
-  const Real separation = std::max(detail::max_face_separation(a, b, frame.relative()).separation,
-                                   detail::max_face_separation(b, a, a_to_b).separation);
-  return finish(!(separation > 0), d);
+  return Outcome::cap;
+}
+
+}  // namespace
+
+OverlapResult gjk_overlap(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
+                          const Pose& pose_b) {
+  const detail::PairFrame frame(a, pose_a, b, pose_b);
+  OverlapResult result;
+  Vec2 separating(0, 0);
+  detail::LocalSimplex local;
+  const Outcome outcome = run_gjk(frame, local, result.iterations, separating);
+  result.simplex = detail::PairFrame::indices(local);
+  if (outcome == Outcome::overlap) {
+    result.overlap = true;
+  } else if (outcome == Outcome::apart) {
+    result.separating_direction = pose_a.rotation.apply(separating);
+  } else {
+    // Past the cap (not reached in any test): the face-normal test decides.
+    result.reached_iteration_cap = true;
+    const Pose a_to_b = detail::inverse(frame.relative());
+    result.overlap = !(std::max(detail::max_face_separation(a, b, frame.relative()).separation,
+                                detail::max_face_separation(b, a, a_to_b).separation) > 0);
+  }
+  return result;
 }
 
 bool hulls_overlap_exact(std::span<const Vec2> a, std::span<const Vec2> b) {

@@ -12,16 +12,19 @@ namespace mink {
 
 namespace {
 
-// Feature ids: a contact point is either a vertex of the incident edge inside the reference
-// face (kind 0: reference edge, incident vertex) or where the incident edge crosses a side of
-// the reference face (kind 1: reference vertex, incident edge). Both stay the same while the
-// same features touch. Indices are kept modulo 2^15.
-constexpr std::uint32_t kIndexMask = 0x7fff;
-constexpr std::uint32_t kClipKind = 1u << 30;
-constexpr std::uint32_t kFlipped = 1u << 31;
+// Feature ids: a contact point is a vertex of the incident edge inside the reference face
+// (kind 0: reference edge, incident vertex), where the incident edge crosses a side of the
+// reference face (kind 1: reference vertex, incident edge), or, when clipping leaves nothing,
+// the nearest points of the pair (kind 2: vertex or edge start on each hull). Each stays the
+// same while the same features touch. Indices are kept modulo 2^14; bit 30 marks B as the
+// reference hull.
+constexpr std::uint32_t kIndexMask = 0x3fff;
+constexpr std::uint32_t kFlipped = 1u << 30;
+enum FeatureKind : std::uint32_t { kVertexInFace = 0, kClipped = 1, kNearest = 2 };
 
-std::uint32_t feature_id(std::uint32_t reference, std::uint32_t incident, bool clipped) {
-  return (reference & kIndexMask) | ((incident & kIndexMask) << 15) | (clipped ? kClipKind : 0);
+std::uint32_t feature_id(std::uint32_t reference, std::uint32_t incident, FeatureKind kind) {
+  return (reference & kIndexMask) | ((incident & kIndexMask) << 14) |
+         (static_cast<std::uint32_t>(kind) << 28);
 }
 
 struct ClipVertex {
@@ -77,17 +80,17 @@ std::uint32_t incident_edge(const PreparedHull& incident, const Vec2& normal) {
 Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
                        const Pose& pose_b, Real speculative_distance) {
   Manifold manifold;
-  const Pose b_to_a = detail::PairFrame(a, pose_a, b, pose_b).relative();
+  const Pose b_to_a = detail::PairFrame::relative_pose(pose_a, pose_b);
   const detail::FaceSeparation on_a = detail::max_face_separation(a, b, b_to_a);
   if (on_a.separation > speculative_distance) return manifold;
   const Pose a_to_b = detail::inverse(b_to_a);
   const detail::FaceSeparation on_b = detail::max_face_separation(b, a, a_to_b);
   if (on_b.separation > speculative_distance) return manifold;
-  if (std::max(on_a.separation, on_b.separation) > 0) {
-    // Apart: the face separation only bounds the distance from below (corner to corner it is
-    // smaller), so the margin is checked against the true distance.
-    if (gjk_distance(a, pose_a, b, pose_b).distance > speculative_distance) return manifold;
-  }
+  // Apart by less than the margin along a face normal. That only bounds the distance from
+  // below (corner to corner it is smaller); a clipped point within the margin proves the
+  // distance is within it too (it lies that far from a point of the reference face), and
+  // without one the true distance decides, below.
+  const bool apart = std::max(on_a.separation, on_b.separation) > 0;
 
   // Prefer A's face unless B's is clearly better, so the choice does not flicker between
   // steps when both are nearly equal (which would reset the feature ids).
@@ -111,16 +114,17 @@ Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const Prepared
       incident_edge(incident, incident_to_reference.rotation.apply_inverse(normal));
   const std::uint32_t i2 = i1 + 1 == incident.size() ? 0 : i1 + 1;
   const std::array<ClipVertex, 2> segment = {
-      ClipVertex{incident_to_reference.apply(incident.vertices()[i1]), feature_id(edge, i1, false)},
+      ClipVertex{incident_to_reference.apply(incident.vertices()[i1]),
+                 feature_id(edge, i1, kVertexInFace)},
       ClipVertex{incident_to_reference.apply(incident.vertices()[i2]),
-                 feature_id(edge, i2, false)}};
+                 feature_id(edge, i2, kVertexInFace)}};
 
   std::array<ClipVertex, 2> once{};
   std::array<ClipVertex, 2> twice{};
   const int after_first =
-      clip(segment, 2, once, -tangent, -tangent.dot(v1), feature_id(edge, i1, true));
+      clip(segment, 2, once, -tangent, -tangent.dot(v1), feature_id(edge, i1, kClipped));
   const int kept =
-      clip(once, after_first, twice, tangent, tangent.dot(v2), feature_id(edge_end, i1, true));
+      clip(once, after_first, twice, tangent, tangent.dot(v2), feature_id(edge_end, i1, kClipped));
 
   const Rotation& rotation = reference_pose.rotation;
   manifold.normal = flip ? Vec2(-rotation.apply(normal)) : rotation.apply(normal);
@@ -133,6 +137,46 @@ Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const Prepared
     point.separation = separation;
     point.id = c.id | (flip ? kFlipped : 0);
   }
+  if (manifold.point_count == 0) {
+    // Nothing clipped within the margin: the incident edge lies wholly beside the reference
+    // face (corner against corner, or a many-sided hull reaching past a short face). One
+    // point instead of none.
+    ManifoldPoint& point = manifold.points[0];
+    if (apart) {
+      const DistanceResult nearest = gjk_distance(a, pose_a, b, pose_b);
+      if (nearest.distance > speculative_distance) return manifold;
+      manifold.point_count = 1;
+      manifold.normal = nearest.normal;
+      point.point = 0.5 * (nearest.point_a + nearest.point_b);
+      point.separation = nearest.distance;
+      // The lowest index pair of the final simplex names the features independently of the
+      // order GJK found them in.
+      const SimplexCache& s = nearest.simplex;
+      std::uint32_t ia = s.index_a[0];
+      std::uint32_t ib = s.index_b[0];
+      for (std::size_t k = 1; k < static_cast<std::size_t>(s.count); ++k) {
+        if (s.index_a[k] < ia || (s.index_a[k] == ia && s.index_b[k] < ib)) {
+          ia = s.index_a[k];
+          ib = s.index_b[k];
+        }
+      }
+      point.id = feature_id(ia, ib, kNearest);
+      return manifold;
+    }
+    // Overlapping: the incident hull's deepest vertex, unclipped.
+    manifold.point_count = 1;
+    const std::uint32_t deepest = static_cast<std::uint32_t>(
+        support_index(incident, incident_to_reference.rotation.apply_inverse(-normal)));
+    const Vec2 c = incident_to_reference.apply(incident.vertices()[deepest]);
+    const Real separation = normal.dot(c - v1);
+    const Rotation& r = reference_pose.rotation;
+    manifold.normal = flip ? Vec2(-r.apply(normal)) : r.apply(normal);
+    point.point = reference_pose.apply(c - 0.5 * separation * normal);
+    point.separation = separation;
+    point.id = feature_id(edge, deepest, kVertexInFace) | (flip ? kFlipped : 0);
+    return manifold;
+  }
+
   return manifold;
 }
 

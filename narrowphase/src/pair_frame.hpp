@@ -1,5 +1,8 @@
 #pragma once
 
+#include <array>
+#include <cmath>
+
 #include "mink/narrowphase/pose.hpp"
 #include "mink/narrowphase/prepared_hull.hpp"
 #include "mink/narrowphase/simplex.hpp"
@@ -7,54 +10,105 @@
 
 namespace mink::detail {
 
+// A support point of A - B in A's frame with the vertex pair it came from: all the loops
+// carry. The hull vertices themselves are looked up from the indices when needed.
+struct LocalVertex {
+  Vec2 point{0, 0};
+  std::uint32_t index_a = 0;
+  std::uint32_t index_b = 0;
+};
+
+struct LocalSimplex {
+  std::array<LocalVertex, 3> vertices{};
+  int count = 0;
+};
+
 // A hull pair seen from A's local frame: B's vertices are mapped by one relative transform,
 // so A's support needs no transform at all and B's costs one rotation of the direction.
 class PairFrame {
  public:
   PairFrame(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b, const Pose& pose_b)
       : a_(a), b_(b), pose_a_(pose_a) {
-    const Rotation& ra = pose_a.rotation;
-    const Rotation& rb = pose_b.rotation;
-    relative_.rotation = {ra.cos * rb.cos + ra.sin * rb.sin, ra.cos * rb.sin - ra.sin * rb.cos};
-    relative_.position = ra.apply_inverse(pose_b.position - pose_a.position);
+    relative_ = relative_pose(pose_a, pose_b);
+#if defined(__SSE2__)
+    if (b.padded_size() == kSupportBlock) {
+      // A small B is mapped into A's frame once, so each support of B in the loops is a plain
+      // scan with no rotation of the direction and no transform of the answer. The same
+      // operations in the same order as Pose::apply, so b_vertex is unchanged.
+      const __m128d c = _mm_set1_pd(relative_.rotation.cos);
+      const __m128d s = _mm_set1_pd(relative_.rotation.sin);
+      const __m128d tx = _mm_set1_pd(relative_.position.x());
+      const __m128d ty = _mm_set1_pd(relative_.position.y());
+      for (std::size_t k = 0; k < kSupportBlock; k += 2) {
+        const __m128d x = _mm_loadu_pd(b.xs() + k);
+        const __m128d y = _mm_loadu_pd(b.ys() + k);
+        _mm_storeu_pd(bx_.data() + k,
+                      _mm_add_pd(_mm_sub_pd(_mm_mul_pd(c, x), _mm_mul_pd(s, y)), tx));
+        _mm_storeu_pd(by_.data() + k,
+                      _mm_add_pd(_mm_add_pd(_mm_mul_pd(s, x), _mm_mul_pd(c, y)), ty));
+      }
+      mapped_ = true;
+    }
+#endif
   }
 
-  const PreparedHull& a() const noexcept { return a_; }
-  const PreparedHull& b() const noexcept { return b_; }
+  // B's local frame to A's, for two posed hulls.
+  static Pose relative_pose(const Pose& pose_a, const Pose& pose_b) {
+    const Rotation& ra = pose_a.rotation;
+    const Rotation& rb = pose_b.rotation;
+    Pose relative;
+    relative.rotation = {ra.cos * rb.cos + ra.sin * rb.sin, ra.cos * rb.sin - ra.sin * rb.cos};
+    relative.position = ra.apply_inverse(pose_b.position - pose_a.position);
+    return relative;
+  }
+
+  const PreparedHull& a() const noexcept {
+    return a_;
+  }
+  const PreparedHull& b() const noexcept {
+    return b_;
+  }
   // B's local frame to A's.
-  const Pose& relative() const noexcept { return relative_; }
-  const Pose& pose_a() const noexcept { return pose_a_; }
+  const Pose& relative() const noexcept {
+    return relative_;
+  }
+  const Pose& pose_a() const noexcept {
+    return pose_a_;
+  }
 
-  Vec2 b_vertex(std::size_t i) const { return relative_.apply(b_.vertices()[i]); }
+  Vec2 b_vertex(std::size_t i) const {
+    return mapped_ ? Vec2(bx_[i], by_[i]) : relative_.apply(b_.vertices()[i]);
+  }
 
-  SimplexVertex vertex(std::uint32_t ia, std::uint32_t ib) const {
-    SimplexVertex v;
-    v.index_a = ia;
-    v.index_b = ib;
-    v.a = a_.vertices()[ia];
-    v.b = b_vertex(ib);
-    v.point = v.a - v.b;
-    return v;
+  LocalVertex vertex(std::uint32_t ia, std::uint32_t ib) const {
+    return {a_.vertices()[ia] - b_vertex(ib), ia, ib};
   }
 
   // Support point of A - B along d (A's frame): eq. 4 of the paper.
-  SimplexVertex support(const Vec2& d) const {
+  LocalVertex support(const Vec2& d) const {
     const auto ia = static_cast<std::uint32_t>(support_index(a_, d));
+#if defined(__SSE2__)
+    if (mapped_) {
+      const auto ib = static_cast<std::uint32_t>(
+          detail::support_block(bx_.data(), by_.data(), Vec2(-d.x(), -d.y())));
+      return {a_.vertices()[ia] - Vec2(bx_[ib], by_[ib]), ia, ib};
+    }
+#endif
     const auto ib =
         static_cast<std::uint32_t>(support_index(b_, relative_.rotation.apply_inverse(-d)));
     return vertex(ia, ib);
   }
 
-  // The simplex in world coordinates.
-  Simplex to_world(const Simplex& local) const {
-    Simplex world = local;
-    for (int i = 0; i < local.count; ++i) {
-      SimplexVertex& v = world.vertices[static_cast<std::size_t>(i)];
-      v.a = pose_a_.apply(v.a);
-      v.b = pose_a_.apply(v.b);
-      v.point = pose_a_.rotation.apply(v.point);
+  // The vertex pairs of a simplex.
+  static SimplexCache indices(const LocalSimplex& s) {
+    SimplexCache c;
+    c.count = s.count;
+    for (int i = 0; i < s.count; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      c.index_a[k] = s.vertices[k].index_a;
+      c.index_b[k] = s.vertices[k].index_b;
     }
-    return world;
+    return c;
   }
 
  private:
@@ -62,13 +116,18 @@ class PairFrame {
   const PreparedHull& b_;
   Pose pose_a_;
   Pose relative_;
+  std::array<Real, kSupportBlock> bx_{};  // B mapped into A's frame, when B is small
+  std::array<Real, kSupportBlock> by_{};
+  bool mapped_ = false;
 };
 
-// Multiplies v by a power of two (exact) so its largest component lies in [1, 2): directions
-// keep their sign tests meaningful at huge and tiny coordinates. Zero stays zero.
+// Multiplies v by a power of two (exact) so its largest component lies in [1, 2) when it is
+// huge or tiny: directions keep their sign tests meaningful (no overflow to infinity, no
+// underflow to zero in dot products) at any coordinates. Ordinary magnitudes pass unchanged,
+// which keeps the common case free of libm calls. Zero stays zero.
 inline Vec2 rescaled_direction(const Vec2& v) {
   const Real m = std::max(std::abs(v.x()), std::abs(v.y()));
-  if (m == 0 || !std::isfinite(m)) return v;
+  if ((m >= 0x1p-200 && m <= 0x1p200) || m == 0 || !std::isfinite(m)) return v;
   const int e = std::ilogb(m);
   return Vec2(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e));
 }

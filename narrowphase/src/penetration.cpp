@@ -39,14 +39,17 @@ PenetrationResult penetration_by_faces(const PreparedHull& a, const Pose& pose_a
 }
 
 PenetrationResult penetration(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
-                              const Pose& pose_b, const Simplex& start) {
+                              const Pose& pose_b, const SimplexCache& start) {
   const detail::PairFrame frame(a, pose_a, b, pose_b);
   if (start.count != 3) return penetration_by_faces(a, pose_a, b, pose_b);
-  std::vector<SimplexVertex> polygon;
+  std::vector<detail::LocalVertex> polygon;
   polygon.reserve(16);
   for (int i = 0; i < 3; ++i) {
-    const SimplexVertex& v = start.vertices[static_cast<std::size_t>(i)];
-    polygon.push_back(frame.vertex(v.index_a, v.index_b));
+    const auto k = static_cast<std::size_t>(i);
+    if (start.index_a[k] >= a.size() || start.index_b[k] >= b.size()) {
+      return penetration_by_faces(a, pose_a, b, pose_b);
+    }
+    polygon.push_back(frame.vertex(start.index_a[k], start.index_b[k]));
   }
   const int winding = orient2d(polygon[0].point, polygon[1].point, polygon[2].point);
   if (winding == 0) return penetration_by_faces(a, pose_a, b, pose_b);
@@ -80,7 +83,7 @@ PenetrationResult penetration(const PreparedHull& a, const Pose& pose_a, const P
       }
     }
     const std::size_t next = (nearest + 1) % polygon.size();
-    const SimplexVertex w = frame.support(nearest_normal);
+    const detail::LocalVertex w = frame.support(nearest_normal);
     const bool repeated =
         (w.index_a == polygon[nearest].index_a && w.index_b == polygon[nearest].index_b) ||
         (w.index_a == polygon[next].index_a && w.index_b == polygon[next].index_b);
@@ -90,7 +93,9 @@ PenetrationResult penetration(const PreparedHull& a, const Pose& pose_a, const P
       const Vec2 e = polygon[next].point - p;
       const Real len2 = e.squaredNorm();
       const Real t = len2 > 0 ? std::clamp(-p.dot(e) / len2, Real(0), Real(1)) : 0;
-      const Vec2 local_a = polygon[nearest].a + t * (polygon[next].a - polygon[nearest].a);
+      const Vec2& a0 = a.vertices()[polygon[nearest].index_a];
+      const Vec2& a1 = a.vertices()[polygon[next].index_a];
+      const Vec2 local_a = a0 + t * (a1 - a0);
       result.depth = std::max<Real>(0, nearest_offset);
       result.normal = pose_a.rotation.apply(nearest_normal);
       result.point_a = pose_a.apply(local_a);

@@ -10,7 +10,20 @@ namespace mink {
 PreparedHull::PreparedHull(ConvexHull hull) : hull_(std::move(hull)) {
   const std::span<const Vec2> v = hull_.vertices();
   const std::size_t n = v.size();
-  centroid_ = mink::centroid(v);
+  // The centroid of the hull scaled by a power of two to unit size, about its first vertex,
+  // so the area neither underflows at tiny coordinates nor overflows at huge ones.
+  Real extent = 0;
+  for (const Vec2& p : v) {
+    extent = std::max({extent, std::abs(p.x() - v[0].x()), std::abs(p.y() - v[0].y())});
+  }
+  const int scale = std::ilogb(extent);
+  std::vector<Vec2> scaled;
+  scaled.reserve(n);
+  for (const Vec2& p : v) {
+    scaled.emplace_back(std::ldexp(p.x() - v[0].x(), -scale), std::ldexp(p.y() - v[0].y(), -scale));
+  }
+  const Vec2 c = mink::centroid(scaled);
+  centroid_ = v[0] + Vec2(std::ldexp(c.x(), scale), std::ldexp(c.y(), scale));
   normals_.resize(n);
   std::vector<Real> angles(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -18,10 +31,15 @@ PreparedHull::PreparedHull(ConvexHull hull) : hull_(std::move(hull)) {
     // Scale by a power of two before normalizing so tiny or huge edges neither underflow nor
     // overflow in the squared length.
     const int exponent = std::ilogb(std::max(std::abs(edge.x()), std::abs(edge.y())));
-    const Vec2 scaled = Vec2(std::ldexp(edge.x(), -exponent), std::ldexp(edge.y(), -exponent));
-    normals_[i] = Vec2(scaled.y(), -scaled.x()).normalized();
+    const Vec2 unit_edge(std::ldexp(edge.x(), -exponent), std::ldexp(edge.y(), -exponent));
+    normals_[i] = Vec2(unit_edge.y(), -unit_edge.x()).normalized();
     angles[i] = pseudo_angle(normals_[i]);
-    radius_ = std::max(radius_, (v[i] - centroid_).norm());
+    face_offsets_.push_back(normals_[i].dot(v[i]));
+    radius_ = std::max(radius_, std::hypot(v[i].x() - centroid_.x(), v[i].y() - centroid_.y()));
+  }
+  for (std::size_t i = 0; i < std::max<std::size_t>(kSupportBlock, n + n % 2); ++i) {
+    xs_.push_back(v[i < n ? i : 0].x());
+    ys_.push_back(v[i < n ? i : 0].y());
   }
   first_normal_ =
       static_cast<std::size_t>(std::min_element(angles.begin(), angles.end()) - angles.begin());

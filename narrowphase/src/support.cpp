@@ -4,20 +4,6 @@
 
 namespace mink {
 
-std::size_t support_index_linear(const PreparedHull& hull, const Vec2& direction) noexcept {
-  const std::span<const Vec2> v = hull.vertices();
-  std::size_t best = 0;
-  Real best_value = v[0].dot(direction);
-  for (std::size_t i = 1; i < v.size(); ++i) {
-    const Real value = v[i].dot(direction);
-    if (value > best_value) {
-      best = i;
-      best_value = value;
-    }
-  }
-  return best;
-}
-
 std::size_t support_index_climb(const PreparedHull& hull, const Vec2& direction,
                                 std::size_t start) noexcept {
   const std::span<const Vec2> v = hull.vertices();

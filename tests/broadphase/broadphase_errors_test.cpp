@@ -60,6 +60,22 @@ TYPED_TEST(BroadphaseErrors, FatBoxFollowsTheMarginRule) {
   EXPECT_EQ(broadphase.proxy_count(), 1u);
 }
 
+TYPED_TEST(BroadphaseErrors, FatBoxReachesAheadAlongTheLastStep) {
+  TypeParam broadphase(0.25);
+  const auto id = broadphase.create_proxy({Vec2(0, 0), Vec2(1, 1)}, ProxyKind::moving, 0);
+  // Steps of +0.125 in x, -0.0625 in y: the box leaves its fat box on the third step and
+  // then reaches four steps ahead, on the side it moves to only.
+  EXPECT_FALSE(broadphase.move_proxy(id, {Vec2(0.125, -0.0625), Vec2(1.125, 0.9375)}));
+  EXPECT_FALSE(broadphase.move_proxy(id, {Vec2(0.25, -0.125), Vec2(1.25, 0.875)}));
+  EXPECT_TRUE(broadphase.move_proxy(id, {Vec2(0.375, -0.1875), Vec2(1.375, 0.8125)}));
+  EXPECT_EQ(broadphase.fat_aabb(id).lower, Vec2(0.125, -0.1875 - 0.25 - 4 * 0.0625));
+  EXPECT_EQ(broadphase.fat_aabb(id).upper, Vec2(1.375 + 0.25 + 4 * 0.125, 0.8125 + 0.25));
+  // A jump is no motion to predict: the reach is capped at four margins.
+  EXPECT_TRUE(broadphase.move_proxy(id, {Vec2(100, 0), Vec2(101, 1)}));
+  EXPECT_EQ(broadphase.fat_aabb(id).lower, Vec2(100 - 0.25, -0.25));
+  EXPECT_EQ(broadphase.fat_aabb(id).upper, Vec2(101 + 0.25 + 4 * 0.25, 1 + 0.25 + 4 * 0.1875));
+}
+
 TYPED_TEST(BroadphaseErrors, StaticPairsAreNeverReported) {
   TypeParam broadphase(0);
   const auto a = broadphase.create_proxy({Vec2(0, 0), Vec2(1, 1)}, ProxyKind::static_body, 0);

@@ -194,14 +194,14 @@ namespace {
 // Counts what World::draw reports, layer by layer.
 class CountingDraw : public DebugDraw {
  public:
-  void draw_polygon(std::span<const Vec2> vertices, DrawColor, bool filled) override {
-    (filled ? filled_polygons : outlines) += 1;
+  void draw_polygon(std::span<const Vec2> vertices, Color fill, Color) override {
+    (fill.a > 0 ? filled_polygons : outlines) += 1;
     vertex_count += vertices.size();
   }
-  void draw_segment(const Vec2&, const Vec2&, DrawColor) override { ++segments; }
-  void draw_point(const Vec2&, float, DrawColor) override { ++points; }
-  void draw_circle(const Vec2&, Real, DrawColor) override {}
-  void draw_text(const Vec2&, std::string_view, DrawColor) override {}
+  void draw_segment(const Vec2&, const Vec2&, Color) override { ++segments; }
+  void draw_point(const Vec2&, float, Color) override { ++points; }
+  void draw_circle(const Vec2&, Real, Color) override {}
+  void draw_text(const Vec2&, std::string_view, Color) override {}
   int filled_polygons = 0, outlines = 0, segments = 0, points = 0;
   std::size_t vertex_count = 0;
 };
@@ -213,12 +213,13 @@ TEST(DebugDrawing, EachLayerReportsWhatTheWorldHolds) {
   add_box(world, {3, 0.5});
   for (int i = 0; i < 10; ++i) world.step();
   CountingDraw shapes_only;
+  shapes_only.layers = draw_shapes;
   world.draw(shapes_only);
   EXPECT_EQ(shapes_only.filled_polygons, 3);
   EXPECT_EQ(shapes_only.vertex_count, 12u);
   EXPECT_EQ(shapes_only.segments + shapes_only.points + shapes_only.outlines, 0);
   CountingDraw everything;
-  everything.flags = ~0u;
+  everything.layers = ~0u;
   world.draw(everything);
   EXPECT_EQ(everything.outlines, 3);  // one fat box per shape
   // Two contacts of two points each, a normal per point, a pair segment per broadphase pair,

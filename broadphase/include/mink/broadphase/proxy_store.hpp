@@ -18,7 +18,8 @@ class ProxyStore {
 
   ProxyId create(const Aabb& tight, ProxyKind kind, std::uint64_t user_data);
   void destroy(ProxyId id);
-  // Refattens and returns true when `tight` leaves the stored box.
+  // Refattens and returns true when `tight` leaves the stored box. The new box also reaches
+  // ahead along the last step's motion, as far as a few steps or a few margins.
   bool move(ProxyId id, const Aabb& tight);
   void release_destroyed();
 
@@ -38,10 +39,12 @@ class ProxyStore {
   Real margin() const { return margin_; }
 
  private:
-  Aabb fattened(const Aabb& tight, std::string_view operation) const;
+  // `tight` grown by the margin and stretched along `step`, the motion since the last move.
+  Aabb fattened(const Aabb& tight, const Vec2& step, std::string_view operation) const;
 
   Real margin_;
   std::vector<Aabb> fat_;
+  std::vector<Vec2> last_lower_;  // lower corner of the last tight box, for the step
   std::vector<ProxyKind> kind_;
   std::vector<std::uint64_t> user_data_;
   std::vector<std::uint8_t> alive_;

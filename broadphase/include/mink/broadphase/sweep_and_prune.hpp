@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "mink/broadphase/broadphase.hpp"
-#include "mink/broadphase/pair_set.hpp"
 #include "mink/broadphase/proxy_store.hpp"
 
 namespace mink {
@@ -17,11 +16,13 @@ namespace mink {
 // are kept apart in a short list every query tests.
 //
 // Only proxies whose fat box changed (or that were created or destroyed) can begin or end
-// pairs, so update_pairs touches only those: it finds the ended pairs by sweeping each one's
-// previous box through the previous array, updates the array by an insertion sort started
-// at the changed entries (frame coherence keeps it short), then finds the begun pairs by
-// sweeping the new boxes. A pair is new exactly when the previous boxes did not overlap, so
-// persistent pairs cost no hash lookups.
+// pairs, so update_pairs searches only for those: one pass over the pair list ends the pairs
+// with a touched member whose current boxes no longer overlap (O(pairs), which the engine
+// pays anyway to visit its contacts, and no index to keep), an insertion sort started at the
+// changed entries updates the array (frame coherence keeps it short), then sweeping the new boxes
+// finds the begun pairs, in array order so that each band's search resumes where the previous one
+// stopped. A pair is new exactly when the previous boxes did not overlap, so the pair list needs no
+// hash set.
 class SweepAndPrune final : public Broadphase {
  public:
   explicit SweepAndPrune(Real margin = 0.1);
@@ -31,7 +32,7 @@ class SweepAndPrune final : public Broadphase {
   bool move_proxy(ProxyId id, const Aabb& tight) override;
   void update_pairs(PairEvents& events) override;
 
-  const std::vector<ProxyPair>& pairs() const override { return pairs_.pairs(); }
+  const std::vector<ProxyPair>& pairs() const override { return pairs_; }
   const Aabb& fat_aabb(ProxyId id) const override;
   std::uint64_t user_data(ProxyId id) const override;
   std::size_t proxy_count() const override { return store_.count(); }
@@ -60,13 +61,26 @@ class SweepAndPrune final : public Broadphase {
 
   void touch(ProxyId id, std::uint8_t what);
   Entry make_entry(ProxyId id, const Aabb& box) const;
+  // Only the box of an entry: enough for overlap().
+  Entry oriented(const Aabb& box) const;
   bool is_oversized(const Entry& entry) const;
   std::uint32_t band_of(Real band_coordinate) const;
 
+  static bool overlap(const Entry& x, const Entry& y);
   // Calls visit(entry) for every stored entry overlapping `entry`'s box.
   template <typename Visit>
   void sweep(const Entry& entry, Visit&& visit) const;
 
+  static const Entry* gallop(const Entry* first, const Entry* last, std::uint64_t key);
+  template <typename Visit>
+  void resume_sweep(const Entry& entry, Visit&& visit);
+  // Reports the pairs of m (whose entry is q) that sweep(q, visit) finds and that did not
+  // exist before.
+  template <typename Sweep>
+  void report_begun(ProxyId m, const Entry& q, PairEvents& events, Sweep&& sweep);
+
+  // The slots of the touched proxies in entries_, ascending; `count` of them are expected.
+  void collect_touched_slots(std::size_t count, std::vector<std::uint32_t>& out) const;
   void find_ended(PairEvents& events);
   void update_structure();
   void find_begun(PairEvents& events);
@@ -78,13 +92,16 @@ class SweepAndPrune final : public Broadphase {
   bool sink(std::size_t i, std::size_t& shifts);
   void sort_changed();
   void rebuild();
+  // Also refreshes band_begin_, which every change of entries_ invalidates.
   void recompute_slots();
+  void find_band_starts();
 
   ProxyStore store_;
-  PairSet pairs_;
+  std::vector<ProxyPair> pairs_;  // the pair set; begun pairs appended, ended ones compacted away
 
-  std::vector<Entry> entries_;         // sorted by key; boxes as of the last update
-  std::vector<Entry> oversized_;       // unsorted; boxes as of the last update
+  std::vector<Entry> entries_;             // sorted by key; boxes as of the last update
+  std::vector<std::uint32_t> band_begin_;  // per band: its first index in entries_, then n
+  std::vector<Entry> oversized_;           // unsorted; boxes as of the last update
   std::vector<std::uint32_t> slot_;    // per id: index in entries_, or in oversized_ with the bit
   std::vector<Aabb> committed_;        // per id: fat box as of the last update
   std::vector<std::uint8_t> touched_;  // per id: Touch bits
@@ -93,6 +110,15 @@ class SweepAndPrune final : public Broadphase {
   // Scratch, kept to avoid allocating every step.
   std::vector<std::uint32_t> changed_slots_;
   std::vector<Entry> appended_;
+  std::vector<std::uint32_t> query_slots_;
+  // Per band: where resume_sweep's last search there ended (valid while stamp matches).
+  struct Cursor {
+    std::uint64_t stamp = 0;
+    std::uint64_t key = 0;
+    std::uint32_t index = 0;
+  };
+  std::vector<Cursor> cursors_;
+  std::uint64_t cursor_stamp_ = 0;
   std::size_t dead_count_ = 0;
 
   // Layout, chosen at each rebuild.

@@ -8,33 +8,38 @@
 
 namespace mink {
 
-struct DrawColor {
-  float r = 1, g = 1, b = 1, a = 1;
+struct Color {
+  float r = 1, g = 1, b = 1, a = 1;  // each in [0, 1]; a < 1 blends over what is below
 };
 
-// What World::draw reports, layer by layer; a renderer implements the primitives. Only the
-// layers whose flag is set are drawn.
+// What World::draw emits; a renderer switches layers on and off with DebugDraw::layers.
+enum DrawLayer : std::uint32_t {
+  draw_shapes = 1u << 0,
+  draw_aabbs = 1u << 1,
+  draw_contact_points = 1u << 2,
+  draw_contact_normals = 1u << 3,
+  draw_broadphase_pairs = 1u << 4,
+  draw_velocities = 1u << 5,
+  draw_sleep_state = 1u << 6,  // sleeping bodies in their own colour
+  draw_centers_of_mass = 1u << 7,
+};
+
+// The only link between the engine and rendering: the engine describes what to draw in world
+// coordinates, the render layer implements this with GL. The engine never includes GL.
 class DebugDraw {
  public:
-  enum Flags : std::uint32_t {
-    shapes = 1u << 0,
-    aabbs = 1u << 1,  // broadphase fat boxes
-    contact_points = 1u << 2,
-    contact_normals = 1u << 3,
-    broadphase_pairs = 1u << 4,  // segments between the centres of paired shapes
-    velocities = 1u << 5,
-    sleeping = 1u << 6,  // sleeping bodies drawn in their own colour (with `shapes`)
-    centers_of_mass = 1u << 7,
-  };
-
   virtual ~DebugDraw() = default;
-  virtual void draw_polygon(std::span<const Vec2> vertices, DrawColor color, bool filled) = 0;
-  virtual void draw_segment(const Vec2& a, const Vec2& b, DrawColor color) = 0;
-  virtual void draw_point(const Vec2& p, float size, DrawColor color) = 0;
-  virtual void draw_circle(const Vec2& center, Real radius, DrawColor color) = 0;
-  virtual void draw_text(const Vec2& p, std::string_view text, DrawColor color) = 0;
 
-  std::uint32_t flags = shapes;
+  // A convex polygon, counter-clockwise, filled and outlined.
+  virtual void draw_polygon(std::span<const Vec2> vertices, Color fill, Color outline) = 0;
+  virtual void draw_segment(const Vec2& a, const Vec2& b, Color color) = 0;
+  // A dot of `pixels` diameter on screen, whatever the zoom.
+  virtual void draw_point(const Vec2& position, float pixels, Color color) = 0;
+  virtual void draw_circle(const Vec2& center, Real radius, Color color) = 0;
+  // A label anchored at a world position, drawn at a fixed screen size.
+  virtual void draw_text(const Vec2& position, std::string_view text, Color color) = 0;
+
+  std::uint32_t layers = draw_shapes | draw_contact_points;
 };
 
 }  // namespace mink

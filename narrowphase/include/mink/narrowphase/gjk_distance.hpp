@@ -1,5 +1,7 @@
 #pragma once
 
+#include <span>
+
 #include "mink/narrowphase/pose.hpp"
 #include "mink/narrowphase/prepared_hull.hpp"
 #include "mink/narrowphase/simplex.hpp"
@@ -14,7 +16,7 @@ struct DistanceResult {
   Vec2 normal{0, 0};     // unit, from A towards B, when apart; zero when overlapping
   int iterations = 0;    // support points taken
   bool reached_iteration_cap = false;
-  Simplex simplex;  // world coordinates; EPA starts from it
+  SimplexCache simplex;  // the final simplex as vertex pairs; EPA starts from it
 };
 
 // GJK distance: the point of A - B nearest the origin by Voronoi-region simplex reduction.
@@ -23,5 +25,15 @@ struct DistanceResult {
 // vertex, on no progress, or at an iteration cap.
 DistanceResult gjk_distance(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
                             const Pose& pose_b, SimplexCache* cache = nullptr);
+
+struct BruteDistance {
+  Real distance = 0;
+  Vec2 normal{0, 0};  // unit, from A towards B
+};
+
+// Distance between disjoint convex polygons (world vertices, CCW) by scanning every vertex
+// against every edge of the other: the nearest pair always involves a vertex of one and an
+// edge of the other. O(n m): the slow twin of gjk_distance.
+BruteDistance hull_distance_brute(std::span<const Vec2> a, std::span<const Vec2> b);
 
 }  // namespace mink

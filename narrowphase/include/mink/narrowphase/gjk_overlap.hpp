@@ -12,7 +12,7 @@ struct OverlapResult {
   bool reached_iteration_cap = false;  // then `overlap` came from the face-normal test
   // When apart: a world direction d with (a - b) . d < 0 for every a in A, b in B.
   Vec2 separating_direction{0, 0};
-  Simplex simplex;  // the final simplex, world coordinates
+  SimplexCache simplex;  // the final simplex as vertex pairs: see world_simplex
 };
 
 // The paper's GJK boolean (section 6): first direction from A's centroid to B's (eq. 2, 3),

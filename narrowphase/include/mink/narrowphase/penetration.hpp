@@ -22,7 +22,7 @@ struct PenetrationResult {
 // exact in 2D because A - B has exactly the edge normals of A and B. Call only for
 // overlapping pairs; for separated ones the result has depth 0.
 PenetrationResult penetration(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
-                              const Pose& pose_b, const Simplex& start);
+                              const Pose& pose_b, const SimplexCache& start);
 
 // The face-normal (separating-axis) answer alone: the minimum over all edge normals of A and B
 // of the overlap along it. O(n + m).

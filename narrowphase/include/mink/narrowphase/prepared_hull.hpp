@@ -11,6 +11,8 @@ namespace mink {
 
 // A hull in its shape's local frame, with what queries need precomputed once at shape
 // creation (centroid, edge normals, search structures for large vertex counts).
+inline constexpr std::size_t kSupportBlock = 8;
+
 class PreparedHull {
  public:
   explicit PreparedHull(ConvexHull hull);
@@ -22,6 +24,8 @@ class PreparedHull {
 
   // Unit outward normal of edge i, the edge from vertex i to vertex i + 1 (cyclic).
   std::span<const Vec2> normals() const noexcept { return normals_; }
+  // normals()[i] . vertices()[i]: where edge i's supporting line lies along its normal.
+  std::span<const Real> face_offsets() const noexcept { return face_offsets_; }
   // Largest distance from the centroid to a vertex: the hull's length scale for tolerances.
   Real radius() const noexcept { return radius_; }
 
@@ -31,12 +35,22 @@ class PreparedHull {
   std::span<const Real> sorted_normal_angles() const noexcept { return sorted_angles_; }
   std::size_t first_normal() const noexcept { return first_normal_; }
 
+  // The vertices' x and y in separate arrays padded with copies of vertex 0 to an even length
+  // of at least kSupportBlock, so the linear support scan works on two vertices per
+  // instruction and on small hulls as one fixed block with no loop.
+  const Real* xs() const noexcept { return xs_.data(); }
+  const Real* ys() const noexcept { return ys_.data(); }
+  std::size_t padded_size() const noexcept { return xs_.size(); }
+
  private:
   ConvexHull hull_;
   Vec2 centroid_{0, 0};
   std::vector<Vec2> normals_;
+  std::vector<Real> face_offsets_;
   std::vector<Real> sorted_angles_;
   std::size_t first_normal_ = 0;
+  std::vector<Real> xs_;
+  std::vector<Real> ys_;
   Real radius_ = 0;
 };
 

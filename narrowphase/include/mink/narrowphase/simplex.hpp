@@ -3,7 +3,8 @@
 #include <array>
 #include <cstdint>
 
-#include "mink/geometry/types.hpp"
+#include "mink/narrowphase/pose.hpp"
+#include "mink/narrowphase/prepared_hull.hpp"
 
 namespace mink {
 
@@ -17,20 +18,25 @@ struct SimplexVertex {
   std::uint32_t index_b = 0;
 };
 
-// The simplex a GJK query ended with (a point, a segment or a triangle), in world coordinates,
-// oldest vertex first. Exposed so pictures can draw it inside the Minkowski difference.
+// A simplex (a point, a segment or a triangle) in world coordinates, oldest vertex first: what
+// pictures draw inside the Minkowski difference.
 struct Simplex {
   std::array<SimplexVertex, 3> vertices{};
   int count = 0;
 };
 
-// The vertex pairs of a previous distance query's final simplex: passed back in, the next query
-// on the same pair starts from them and converges in one or two iterations when the poses
-// changed little. count == 0 means cold.
+// A simplex as the vertex pairs (index into A, index into B) it came from, oldest first. Query
+// results hold their final simplex this way (cheap to fill); world_simplex turns it into
+// points. Passed back into gjk_distance, the next query on the same pair starts from it and
+// converges in one or two iterations when the poses changed little. count == 0 means cold.
 struct SimplexCache {
   int count = 0;
   std::array<std::uint32_t, 3> index_a{};
   std::array<std::uint32_t, 3> index_b{};
 };
+
+// The points of an index-pair simplex for the posed hulls.
+Simplex world_simplex(const SimplexCache& indices, const PreparedHull& a, const Pose& pose_a,
+                      const PreparedHull& b, const Pose& pose_b);
 
 }  // namespace mink

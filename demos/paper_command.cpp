@@ -1,0 +1,90 @@
+#include <filesystem>
+#include <memory>
+#include <ostream>
+#include <string>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "mink/error.hpp"
+#include "mink/render/gl_context.hpp"
+#include "mink/render/png_file.hpp"
+#include "paper_figures.hpp"
+
+namespace mink::cli {
+
+namespace {
+
+struct PaperOptions {
+  std::string out;
+  std::string gl = "osmesa";
+  std::string size = "1200x700";
+  PaperSettings settings;
+};
+
+// "WxH" with both in 64..8192.
+void parse_size(const std::string& text, PaperSettings& settings) {
+  const std::size_t x = text.find('x');
+  std::size_t used_w = 0;
+  std::size_t used_h = 0;
+  try {
+    if (x == std::string::npos) throw InvalidArgumentError("");
+    settings.width = std::stoi(text.substr(0, x), &used_w);
+    settings.height = std::stoi(text.substr(x + 1), &used_h);
+  } catch (const std::exception&) {
+    throw InvalidArgumentError("--size '" + text + "' is not WIDTHxHEIGHT, e.g. 1200x700");
+  }
+  if (used_w != x || used_h != text.size() - x - 1 || settings.width < 64 || settings.height < 64 ||
+      settings.width > 8192 || settings.height > 8192) {
+    throw InvalidArgumentError("--size '" + text + "' must be WIDTHxHEIGHT with both in 64..8192");
+  }
+}
+
+int run_paper(PaperOptions options, Streams streams) {
+  options.settings.backend = parse_gl_backend(options.gl);
+  parse_size(options.size, options.settings);
+  const std::filesystem::path out(options.out);
+  std::filesystem::create_directories(out);
+  const auto context = make_offscreen_context(options.settings.backend, options.settings.width,
+                                              options.settings.height);
+  RendererOptions renderer_options;
+  renderer_options.samples = 4;  // smooth edges for figures
+  Renderer renderer(*context, renderer_options);
+  int missing = 0;
+  for (const PaperFigure& figure : paper_figures()) {
+    if (!figure.draw) {
+      streams.out << "not written: " << figure.file << " (" << figure.caption
+                  << "): " << figure.missing << '\n';
+      ++missing;
+      continue;
+    }
+    renderer.begin_frame(Color{1, 1, 1, 1});
+    figure.draw(renderer, options.settings);
+    renderer.end_frame();
+    const std::filesystem::path file = out / figure.file;
+    write_png(file, renderer.read_pixels(3));
+    streams.out << "wrote " << file.string() << " (" << figure.caption << ")\n";
+  }
+  if (missing > 0) {
+    streams.out << missing << " of the paper's figures wait for the narrowphase layer\n";
+  }
+  return kSuccess;
+}
+
+}  // namespace
+
+Action add_paper_command(CLI::App& app, Streams streams) {
+  auto options = std::make_shared<PaperOptions>();
+  CLI::App* command = app.add_subcommand(
+      "paper",
+      "Draw the paper's figures (8: point sets, 9: Chan, 10: divide and conquer; 12 and "
+      "13 once GJK exists) as PNG files, headless.");
+  command->add_option("--out", options->out, "directory for the PNG files")->required();
+  command->add_option("--gl", options->gl, "headless GL backend: osmesa (default) or egl");
+  command->add_option("--size", options->size, "image size WIDTHxHEIGHT (default 1200x700)");
+  command->add_option("--seed", options->settings.seed, "random seed (default 2013)");
+  command->add_option("--points", options->settings.count, "points in each set (default 500)")
+      ->check(CLI::Range(std::size_t{3}, std::size_t{100'000}));
+  return [options, streams] { return run_paper(*options, streams); };
+}
+
+}  // namespace mink::cli

@@ -1,0 +1,252 @@
+#include "paper_figures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "mink/geometry/hull_trace.hpp"
+#include "mink/geometry/point_sets.hpp"
+#include "mink/render/bitmap_font.hpp"
+
+namespace mink::cli {
+
+namespace {
+
+// The paper's canvas: points in [0, 400]^2.
+const Vec2 kCanvasLower(0, 0);
+const Vec2 kCanvasUpper(400, 400);
+
+constexpr Color kBackground{1, 1, 1, 1};
+constexpr Color kInk{0.08f, 0.08f, 0.1f, 1};
+constexpr Color kFaint{0.55f, 0.55f, 0.6f, 1};
+constexpr Color kNone{0, 0, 0, 0};
+constexpr Color kSetA{0.13f, 0.4f, 0.8f, 1};
+constexpr Color kSetB{0.85f, 0.4f, 0.05f, 1};
+constexpr Color kUpper{0.8f, 0.1f, 0.45f, 1};
+constexpr Color kLower{0.1f, 0.6f, 0.3f, 1};
+
+// Room for four title lines at text scale 2.
+constexpr Real kTitleHeight = 84;
+// Room around the canvas for labels just outside it.
+constexpr Real kCanvasMargin = 40;
+
+Color with_alpha(Color c, float a) {
+  c.a = a;
+  return c;
+}
+
+// A distinct, darkish colour per group: hues a golden angle apart.
+Color group_color(std::size_t index) {
+  const double hue = std::fmod(index * 0.618033988749895, 1.0) * 6;
+  const double x = 1 - std::abs(std::fmod(hue, 2.0) - 1);
+  double r = 0, g = 0, b = 0;
+  switch (static_cast<int>(hue)) {
+    case 0:
+      r = 1, g = x;
+      break;
+    case 1:
+      r = x, g = 1;
+      break;
+    case 2:
+      g = 1, b = x;
+      break;
+    case 3:
+      g = x, b = 1;
+      break;
+    case 4:
+      r = x, b = 1;
+      break;
+    default:
+      r = 1, b = x;
+      break;
+  }
+  const auto shade = [](double v) { return static_cast<float>(0.15 + 0.7 * v); };
+  return Color{shade(r), shade(g), shade(b), 1};
+}
+
+// Breaks lines at spaces so none is longer than `columns` characters (a longer word stays
+// whole); existing line breaks are kept.
+std::string wrap(const std::string& text, std::size_t columns) {
+  std::string wrapped;
+  std::size_t line_length = 0;
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t end = std::min(text.find_first_of(" \n", begin), text.size());
+    const std::string word = text.substr(begin, end - begin);
+    if (line_length > 0 && line_length + 1 + word.size() > columns) {
+      wrapped += '\n';
+      line_length = 0;
+    } else if (line_length > 0) {
+      wrapped += ' ';
+      ++line_length;
+    }
+    wrapped += word;
+    line_length += word.size();
+    if (end < text.size() && text[end] == '\n') {
+      wrapped += '\n';
+      line_length = 0;
+    }
+    begin = end + 1;
+  }
+  return wrapped;
+}
+
+// Splits the frame into `count` side-by-side panels, each with a title line on top, and
+// points the camera at the canvas inside panel `index`.
+void panel(Renderer& r, int count, int index, const std::string& title) {
+  const Real width = static_cast<Real>(r.width()) / count;
+  const Vec2 top_left(width * index, 0);
+  const Vec2 bottom_right(width * (index + 1), r.height());
+  r.camera().fit_region(kCanvasLower, kCanvasUpper, top_left + Vec2(0, kTitleHeight), bottom_right,
+                        kCanvasMargin);
+  const auto columns =
+      static_cast<std::size_t>((width - 24) / (BitmapFont::advance * r.options().text_scale));
+  r.draw_screen_text(top_left + Vec2(16, 10), wrap(title, columns), kInk);
+  // The canvas border.
+  const Vec2 canvas[] = {{0, 0}, {400, 0}, {400, 400}, {0, 400}};
+  r.draw_polygon(canvas, kNone, kFaint);
+}
+
+void points(Renderer& r, std::span<const Vec2> set, Color color, float size = 5) {
+  for (const Vec2& p : set) r.draw_point(p, size, color);
+}
+
+void outline(Renderer& r, std::span<const Vec2> ring, Color color) {
+  if (ring.size() >= 3) {
+    r.draw_polygon(ring, kNone, color);
+  } else if (ring.size() == 2) {
+    r.draw_segment(ring[0], ring[1], color);
+  }
+}
+
+std::string count_text(std::size_t n, const char* noun, const char* plural = nullptr) {
+  return std::to_string(n) + " " +
+         (n == 1              ? std::string(noun)
+          : plural != nullptr ? plural
+                              : std::string(noun) + "s");
+}
+
+// A label on a white backing so it reads over points and lines; `world` is the middle of its
+// left end.
+void label(Renderer& r, const Vec2& world, const std::string& text, Color color) {
+  const int scale = r.options().text_scale;
+  const Vec2 anchor = r.camera().world_to_pixel(world);
+  const Vec2 top_left = anchor - Vec2(0, BitmapFont::glyph_height * scale / 2.0);
+  const Vec2 size(BitmapFont::text_width(text) * scale, BitmapFont::glyph_height * scale);
+  r.draw_screen_rect(top_left - Vec2(3, 3), top_left + size + Vec2(3, 3), Color{1, 1, 1, 0.85f});
+  r.draw_screen_text(top_left, text, color);
+}
+
+void figure_8(Renderer& r, const PaperSettings& settings) {
+  const auto [set_a, set_b] = paper_point_sets(settings.seed, settings.count);
+  panel(r, 2, 0,
+        "Fig. 8a  set A, hulled by Chan\n" + count_text(set_a.size(), "point") +
+            " in the 400 x 400 canvas, seed " + std::to_string(settings.seed));
+  points(r, set_a, kSetA);
+  panel(r, 2, 1,
+        "Fig. 8b  set B, hulled by divide and conquer\n" + count_text(set_b.size(), "point") +
+            " in the 400 x 400 canvas, seed " + std::to_string(settings.seed));
+  points(r, set_b, kSetB);
+}
+
+void figure_9(Renderer& r, const PaperSettings& settings) {
+  const auto [set_a, set_b] = paper_point_sets(settings.seed, settings.count);
+  const ChanTrace trace = chan_trace(set_a);
+  const int count = static_cast<int>(trace.rounds.size());
+  for (int i = 0; i < count; ++i) {
+    const ChanRound& round = trace.rounds[static_cast<std::size_t>(i)];
+    std::size_t in_play = 0;
+    for (const auto& group : round.groups.points) in_play += group.size();
+    std::string verdict =
+        "the wrap closes: hull of " + count_text(trace.hull.size(), "vertex", "vertices");
+    if (!round.closed) {
+      std::size_t survivors = 0;
+      for (const auto& ring : round.groups.hulls) survivors += ring.size();
+      verdict = "no closure in " + std::to_string(round.groups.group_size) + " wrap steps: the " +
+                std::to_string(survivors) + " group hull vertices go on to round " +
+                std::to_string(round.t + 1);
+    }
+    panel(r, count, i,
+          "Fig. 9" + std::string(1, static_cast<char>('a' + i)) + "  Chan, round t = " +
+              std::to_string(round.t) + ", m = " + std::to_string(round.groups.group_size) + ": " +
+              count_text(round.groups.hulls.size(), "group") + " of " +
+              count_text(in_play, "point") + ", a Graham hull each; " + verdict);
+    for (std::size_t g = 0; g < round.groups.hulls.size(); ++g) {
+      const Color color = group_color(g);
+      const auto& ring = round.groups.hulls[g];
+      if (ring.size() >= 3)
+        r.draw_polygon(ring, with_alpha(color, 0.12f), with_alpha(color, 0.8f));
+      else
+        outline(r, ring, color);
+      points(r, round.groups.points[g], color, 4);
+    }
+    if (round.closed) {
+      r.draw_polygon(trace.hull.vertices(), kNone, kInk);
+      points(r, trace.hull.vertices(), kInk, 8);
+    }
+  }
+}
+
+void figure_10(Renderer& r, const PaperSettings& settings) {
+  const auto [set_a, set_b] = paper_point_sets(settings.seed, settings.count);
+  const DivideConquerTrace trace = divide_conquer_trace(set_b);
+  panel(r, 1, 0,
+        "Fig. 10  divide and conquer: halves by x, Melkman hull of each (" +
+            count_text(trace.left_hull.size(), "vertex", "vertices") + " | " +
+            count_text(trace.right_hull.size(), "vertex", "vertices") + "),\n" +
+            "merged by the upper and lower common tangents into " +
+            count_text(trace.hull.size(), "vertex", "vertices"));
+  // The split between the halves.
+  const Real split = (trace.left_points.back().x() + trace.right_points.front().x()) / 2;
+  for (Real y = 0; y < 400; y += 16) {
+    r.draw_segment(Vec2(split, y), Vec2(split, std::min<Real>(y + 8, 400)), kFaint);
+  }
+  r.draw_polygon(trace.hull.vertices(), with_alpha(kInk, 0.05f), kNone);
+  r.draw_polygon(trace.left_hull, with_alpha(kSetA, 0.1f), kSetA);
+  r.draw_polygon(trace.right_hull, with_alpha(kSetB, 0.1f), kSetB);
+  points(r, trace.left_points, kSetA, 4);
+  points(r, trace.right_points, kSetB, 4);
+  const Vec2& upper_left = trace.left_hull[trace.upper_left];
+  const Vec2& upper_right = trace.right_hull[trace.upper_right];
+  const Vec2& lower_left = trace.left_hull[trace.lower_left];
+  const Vec2& lower_right = trace.right_hull[trace.lower_right];
+  for (int k = -1; k <= 1; ++k) {  // a thicker stroke: three offset passes
+    const Vec2 d(0, k * 1.2 / r.camera().pixels_per_unit());
+    r.draw_segment(upper_left + d, upper_right + d, kUpper);
+    r.draw_segment(lower_left + d, lower_right + d, kLower);
+  }
+  for (const Vec2& p : {upper_left, upper_right}) r.draw_point(p, 10, kUpper);
+  for (const Vec2& p : {lower_left, lower_right}) r.draw_point(p, 10, kLower);
+  // Labels beside the tangents' right ends, above the upper and below the lower one.
+  const Real lift = 14 / r.camera().pixels_per_unit();
+  const Real gap = 10 / r.camera().pixels_per_unit();
+  label(r,
+        Vec2(std::max(upper_left.x(), upper_right.x()) + gap,
+             std::max<Real>(upper_left.y(), upper_right.y()) + lift),
+        "upper tangent", kUpper);
+  label(r,
+        Vec2(std::max(lower_left.x(), lower_right.x()) + gap,
+             std::min<Real>(lower_left.y(), lower_right.y()) - lift),
+        "lower tangent", kLower);
+  label(r, Vec2(split + gap, 200), "split", kFaint);
+}
+
+}  // namespace
+
+std::vector<PaperFigure> paper_figures() {
+  return {
+      {"fig08_point_sets.png", "the two random point sets", figure_8, ""},
+      {"fig09_chan.png", "Chan's groups and final hull", figure_9, ""},
+      {"fig10_divide_conquer.png", "divide-and-conquer halves with the upper and lower tangents",
+       figure_10, ""},
+      // Figures 12 and 13 draw GJK's verdict, the Minkowski difference and the final simplex:
+      // they are drawn here once the narrowphase layer provides GJK.
+      {"fig12_gjk_verdict.png", "hulls after translate/scale with the GJK verdict", nullptr,
+       "needs GJK from the narrowphase layer"},
+      {"fig13_minkowski_difference.png",
+       "the Minkowski difference with the final simplex and the origin", nullptr,
+       "needs GJK and the Minkowski difference from the narrowphase layer"},
+  };
+}
+
+}  // namespace mink::cli

@@ -1,0 +1,16 @@
+#pragma once
+
+#include <filesystem>
+
+#include "mink/render/image.hpp"
+
+namespace mink {
+
+// Writes an 8-bit RGB or RGBA PNG. Throws OutputError naming the file when it cannot be
+// written, InvalidArgumentError for an empty or inconsistent image.
+void write_png(const std::filesystem::path& path, const Image& image);
+// Reads any PNG libpng reads, converted to 8-bit RGBA. Throws OutputError naming the file when
+// it is missing or not a PNG.
+Image read_png(const std::filesystem::path& path);
+
+}  // namespace mink

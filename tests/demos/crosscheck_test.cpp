@@ -1,0 +1,75 @@
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+#include "commands.hpp"
+#include "exact_overlap_oracle.hpp"
+#include "gjk_crosscheck.hpp"
+#include "mink/geometry/convex_hull.hpp"
+#include "mink/narrowphase/gjk_distance.hpp"
+#include "mink/narrowphase/gjk_overlap.hpp"
+
+namespace {
+
+using namespace mink_test;
+
+#ifdef MINK_SANITIZED_BUILD
+constexpr int kBox2dPairs = 3000;
+constexpr int kExactPairs = 300;
+#else
+constexpr int kBox2dPairs = 30000;
+constexpr int kExactPairs = 3000;
+#endif
+
+TEST(Crosscheck, AgreesWithBox2dOutsideTheBand) {
+  std::istringstream in;
+  std::ostringstream out;
+  std::ostringstream err;
+  const std::string pairs = std::to_string(kBox2dPairs);
+  const char* argv[] = {"mink", "crosscheck", "gjk", "--pairs", pairs.c_str(), "--seed", "99"};
+  EXPECT_EQ(mink::cli::run(7, argv, {in, out, err}), 0) << out.str() << err.str();
+  EXPECT_NE(out.str().find("gjk crosscheck: " + pairs + " pairs (seed 99)"), std::string::npos)
+      << out.str();
+  EXPECT_NE(out.str().find("(0 outside the 1e-06 band of touching)"), std::string::npos);
+}
+
+TEST(Crosscheck, ReportsDisagreementsAndFailsOutsideATinyBand) {
+  // With a band far below float precision, Box2D's float answers near touching must show up
+  // as failures: the check can fail.
+  std::istringstream in;
+  std::ostringstream out;
+  std::ostringstream err;
+  const char* argv[] = {"mink", "crosscheck", "gjk", "--pairs", "5000", "--band", "1e-15"};
+  EXPECT_EQ(mink::cli::run(7, argv, {in, out, err}), 1);
+  EXPECT_NE(out.str().find("OUTSIDE the 1e-15 band"), std::string::npos) << out.str();
+}
+
+// The same kind of pairs against CGAL's exact predicates: our verdicts are right except, at
+// most, within rounding of touching; distances match a brute-force scan.
+TEST(Crosscheck, VerdictsAgreeWithTheExactOracle) {
+  std::mt19937_64 rng(2024);
+  const mink::Pose identity{};
+  int near_touching = 0;
+  for (int k = 0; k < kExactPairs; ++k) {
+    const mink::cli::CrosscheckPair pair = mink::cli::random_crosscheck_pair(rng);
+    const mink::PreparedHull a(mink::ConvexHull::from_ccw_vertices(pair.a));
+    const mink::PreparedHull b(mink::ConvexHull::from_ccw_vertices(pair.b));
+    const bool exact = exact_overlap(cgal_hull(pair.a), cgal_hull(pair.b));
+    const mink::OverlapResult boolean = mink::gjk_overlap(a, identity, b, identity);
+    const mink::DistanceResult distance = mink::gjk_distance(a, identity, b, identity);
+    const Real gap = exact ? scan_depth(pair.a, pair.b) : scan_distance(pair.a, pair.b);
+    if (gap < 1e-12) {
+      ++near_touching;
+      continue;
+    }
+    ASSERT_EQ(boolean.overlap, exact) << "pair " << k << ", gap " << gap;
+    ASSERT_EQ(distance.overlap, exact) << "pair " << k << ", gap " << gap;
+    if (!exact) {
+      EXPECT_NEAR(distance.distance, gap, 1e-9 * std::max<Real>(1, gap));
+    }
+  }
+  EXPECT_LT(near_touching, kExactPairs / 20);
+}
+
+}  // namespace

@@ -1,0 +1,87 @@
+#pragma once
+
+// An oracle for `mink overlap` independent of Minkowski: CGAL's hull and CGAL's exact
+// predicates for the verdict, and brute-force scans of every vertex-edge pair for the
+// distance and every edge normal for the depth.
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/convex_hull_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "mink/geometry/types.hpp"
+
+namespace mink_test {
+
+using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using ExactPoint = ExactKernel::Point_2;
+using mink::Real;
+using mink::Vec2;
+
+// CCW hull by CGAL, as doubles (the input doubles themselves: no constructions).
+inline std::vector<Vec2> cgal_hull(std::span<const Vec2> points) {
+  std::vector<ExactPoint> in;
+  for (const Vec2& p : points) in.emplace_back(p.x(), p.y());
+  std::vector<ExactPoint> out;
+  CGAL::convex_hull_2(in.begin(), in.end(), std::back_inserter(out));
+  std::vector<Vec2> hull;
+  for (const ExactPoint& p : out) hull.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+  return hull;
+}
+
+// Closed convex polygons intersect iff no edge of either has the other strictly outside.
+inline bool exact_overlap(std::span<const Vec2> a, std::span<const Vec2> b) {
+  auto separates = [](std::span<const Vec2> p, std::span<const Vec2> q) {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const ExactPoint from(p[i].x(), p[i].y());
+      const ExactPoint to(p[(i + 1) % p.size()].x(), p[(i + 1) % p.size()].y());
+      const bool all_outside = std::all_of(q.begin(), q.end(), [&](const Vec2& w) {
+        return CGAL::orientation(from, to, ExactPoint(w.x(), w.y())) == CGAL::RIGHT_TURN;
+      });
+      if (all_outside) return true;
+    }
+    return false;
+  };
+  return !separates(a, b) && !separates(b, a);
+}
+
+inline Real scan_distance(std::span<const Vec2> a, std::span<const Vec2> b) {
+  Real best = std::numeric_limits<Real>::infinity();
+  for (int pass = 0; pass < 2; ++pass) {
+    const auto p = pass == 0 ? a : b;
+    const auto q = pass == 0 ? b : a;
+    for (const Vec2& v : p) {
+      for (std::size_t i = 0; i < q.size(); ++i) {
+        const Vec2 s0 = q[i];
+        const Vec2 e = q[(i + 1) % q.size()] - s0;
+        const Real t = std::clamp((v - s0).dot(e) / e.squaredNorm(), Real(0), Real(1));
+        best = std::min(best, (v - s0 - t * e).norm());
+      }
+    }
+  }
+  return best;
+}
+
+inline Real scan_depth(std::span<const Vec2> a, std::span<const Vec2> b) {
+  Real best = std::numeric_limits<Real>::infinity();
+  for (int pass = 0; pass < 2; ++pass) {
+    const auto p = pass == 0 ? a : b;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Vec2 e = p[(i + 1) % p.size()] - p[i];
+      Vec2 u = Vec2(e.y(), -e.x()).normalized();
+      if (pass == 1) u = -u;
+      Real hi_a = -std::numeric_limits<Real>::infinity();
+      Real lo_b = std::numeric_limits<Real>::infinity();
+      for (const Vec2& v : a) hi_a = std::max(hi_a, v.dot(u));
+      for (const Vec2& v : b) lo_b = std::min(lo_b, v.dot(u));
+      best = std::min(best, hi_a - lo_b);
+    }
+  }
+  return best;
+}
+
+}  // namespace mink_test

@@ -1,0 +1,96 @@
+// `mink paper` end to end: the figures that exist are written, at the asked size, and show
+// what they are about; the ones that need GJK are reported, not faked.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "mink/render/png_file.hpp"
+
+namespace {
+
+struct Result {
+  int code;
+  std::string out;
+  std::string err;
+};
+
+Result run(std::vector<std::string> arguments) {
+  arguments.insert(arguments.begin(), "mink");
+  std::vector<const char*> argv;
+  for (const std::string& a : arguments) argv.push_back(a.c_str());
+  std::istringstream in;
+  std::ostringstream out;
+  std::ostringstream err;
+  const int code = mink::cli::run(static_cast<int>(argv.size()), argv.data(), {in, out, err});
+  return {code, out.str(), err.str()};
+}
+
+// Pixels of exactly this colour in columns [x0, x1).
+int count(const mink::Image& image, std::array<std::uint8_t, 3> rgb, int x0, int x1) {
+  int found = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const auto p = image.at(x, y);
+      found += p[0] == rgb[0] && p[1] == rgb[1] && p[2] == rgb[2];
+    }
+  }
+  return found;
+}
+
+class PaperCommand : public testing::TestWithParam<std::string> {};
+
+TEST_P(PaperCommand, WritesTheFiguresThatExistAndSaysWhichWait) {
+  const auto dir = std::filesystem::path(testing::TempDir()) / ("mink_paper_" + GetParam());
+  std::filesystem::remove_all(dir);
+  const Result result =
+      run({"paper", "--out", dir.string(), "--gl", GetParam(), "--size", "480x300"});
+  ASSERT_EQ(result.code, 0) << result.err;
+  for (const char* name : {"fig08_point_sets.png", "fig09_chan.png", "fig10_divide_conquer.png"}) {
+    const mink::Image image = mink::read_png(dir / name);
+    EXPECT_EQ(image.width, 480) << name;
+    EXPECT_EQ(image.height, 300) << name;
+    EXPECT_NE(result.out.find(name), std::string::npos);
+  }
+  for (const char* name : {"fig12_gjk_verdict.png", "fig13_minkowski_difference.png"}) {
+    EXPECT_FALSE(std::filesystem::exists(dir / name)) << name;
+    EXPECT_NE(result.out.find(std::string("not written: ") + name), std::string::npos);
+  }
+  // Figure 8: set A's blue on the left panel only, set B's orange on the right only.
+  const mink::Image fig8 = mink::read_png(dir / "fig08_point_sets.png");
+  const std::array<std::uint8_t, 3> blue = {33, 102, 204};
+  const std::array<std::uint8_t, 3> orange = {217, 102, 13};
+  EXPECT_GT(count(fig8, blue, 0, 240), 100);
+  EXPECT_EQ(count(fig8, blue, 240, 480), 0);
+  EXPECT_GT(count(fig8, orange, 240, 480), 100);
+  EXPECT_EQ(count(fig8, orange, 0, 240), 0);
+  // Figure 10: the upper tangent's magenta and the lower tangent's green are there.
+  const mink::Image fig10 = mink::read_png(dir / "fig10_divide_conquer.png");
+  EXPECT_GT(count(fig10, {204, 26, 115}, 0, 480), 20);
+  EXPECT_GT(count(fig10, {26, 153, 77}, 0, 480), 20);
+  std::filesystem::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, PaperCommand, testing::Values("osmesa", "egl"),
+                         [](const testing::TestParamInfo<std::string>& info) {
+                           return info.param;
+                         });
+
+TEST(PaperCommandErrors, NameTheBadOption) {
+  const auto dir = std::filesystem::path(testing::TempDir()) / "mink_paper_bad";
+  Result result = run({"paper", "--out", dir.string(), "--gl", "vulkan"});
+  EXPECT_EQ(result.code, 2);
+  EXPECT_NE(result.err.find("vulkan"), std::string::npos);
+  result = run({"paper", "--out", dir.string(), "--size", "big"});
+  EXPECT_EQ(result.code, 2);
+  EXPECT_NE(result.err.find("big"), std::string::npos);
+  result = run({"paper", "--out", dir.string(), "--size", "10x10"});
+  EXPECT_EQ(result.code, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir / "fig08_point_sets.png"));
+}
+
+}  // namespace
