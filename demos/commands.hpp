@@ -21,6 +21,7 @@ Action add_demo_command(CLI::App& app, Streams streams);
 Action add_overlap_command(CLI::App& app, Streams streams);
 Action add_crosscheck_command(CLI::App& app, Streams streams);
 Action add_paper_command(CLI::App& app, Streams streams);
+Action add_sandbox_command(CLI::App& app, Streams streams);
 
 // Runs `mink` with the given arguments; what main() does, callable from tests.
 int run(int argc, const char* const* argv, Streams streams);

@@ -21,6 +21,7 @@ int run(int argc, const char* const* argv, Streams streams) {
   actions["crosscheck"] = add_crosscheck_command(app, streams);
 #endif
   actions["paper"] = add_paper_command(app, streams);
+  actions["sandbox"] = add_sandbox_command(app, streams);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {

@@ -1,0 +1,173 @@
+#include "sandbox.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstdio>
+
+#include "mink/engine/shape_def.hpp"
+#include "mink/geometry/point_sets.hpp"
+#include "mink/render/bitmap_font.hpp"
+
+namespace mink::cli {
+
+namespace {
+
+constexpr Real kFrameSeconds = 1.0 / 60.0;
+// The dragged point closes this fraction of its gap to the cursor per second (a stiff spring
+// without the spring's overshoot), capped so a fast flick does not tunnel through bodies.
+constexpr Real kDragRate = 12;
+constexpr Real kDragMaxSpeed = 40;
+
+struct LayerKey {
+  char key;
+  DrawLayer layer;
+  const char* name;
+};
+constexpr std::array<LayerKey, 8> kLayerKeys{{
+    {'1', draw_shapes, "shapes"},
+    {'2', draw_aabbs, "aabbs"},
+    {'3', draw_contact_points, "contacts"},
+    {'4', draw_contact_normals, "normals"},
+    {'5', draw_broadphase_pairs, "pairs"},
+    {'6', draw_velocities, "velocities"},
+    {'7', draw_sleep_state, "sleep"},
+    {'8', draw_centers_of_mass, "centres"},
+}};
+
+std::string lower(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+}  // namespace
+
+Sandbox::Sandbox(Renderer& renderer, std::string_view scene)
+    : renderer_(renderer), scene_(scene), world_(build_world(builtin_scene(scene))) {
+  renderer_.layers = draw_shapes | draw_contact_points;
+  reset();
+}
+
+void Sandbox::reset() {
+  world_ = build_world(builtin_scene(scene_));
+  dragged_.reset();
+  drops_ = 0;
+  // The camera shows every shape with room above for dropping hulls; it stays put afterwards
+  // so the mouse maps to the same place in the world.
+  Vec2 lower(0, 0);
+  Vec2 upper(0, 0);
+  bool first = true;
+  for (const BodyId body : world_.bodies()) {
+    for (const ShapeId shape : world_.body_shapes(body)) {
+      const Aabb box = world_.shape_aabb(shape);
+      lower = first ? box.lower : lower.cwiseMin(box.lower);
+      upper = first ? box.upper : upper.cwiseMax(box.upper);
+      first = false;
+    }
+  }
+  const Vec2 size = (upper - lower).cwiseMax(Vec2(1, 1));
+  upper.y() += 0.5 * size.y();
+  renderer_.camera().fit(lower, upper, 24);
+}
+
+void Sandbox::key(std::string_view name) {
+  const std::string k = lower(name);
+  if (k == "space") {
+    paused_ = !paused_;
+  } else if (k == "s") {
+    step_once_ = true;
+  } else if (k == "r") {
+    reset();
+  } else if (k == "n") {
+    const auto names = builtin_scene_names();
+    const auto at = std::find(names.begin(), names.end(), scene_);
+    scene_ = std::string(at == names.end() || at + 1 == names.end() ? names.front() : *(at + 1));
+    reset();
+  } else if (k == "escape" || k == "q") {
+    quit_ = true;
+  } else if (k.size() == 1) {
+    for (const LayerKey& layer : kLayerKeys) {
+      if (layer.key == k[0]) renderer_.layers ^= layer.layer;
+    }
+  }
+}
+
+void Sandbox::mouse_down(const Vec2& pixel) {
+  cursor_ = renderer_.camera().pixel_to_world(pixel);
+  for (const ShapeId shape : world_.query_point(cursor_)) {
+    const BodyId body = world_.shape_body(shape);
+    if (world_.body_type(body) != BodyType::dynamic) continue;
+    dragged_ = body;
+    grab_local_ = world_.pose(body).apply_inverse(cursor_);
+    world_.set_awake(body, true);
+    return;
+  }
+  drop_hull(cursor_);
+}
+
+void Sandbox::mouse_move(const Vec2& pixel) {
+  cursor_ = renderer_.camera().pixel_to_world(pixel);
+}
+
+void Sandbox::mouse_up(const Vec2& pixel) {
+  mouse_move(pixel);
+  dragged_.reset();
+}
+
+void Sandbox::drop_hull(const Vec2& world_point) {
+  // A random convex shape about a unit across: the hull of a few points of a disk.
+  ++drops_;
+  BodyDef body;
+  body.type = BodyType::dynamic;
+  body.position = world_point;
+  ShapeDef shape;
+  for (const Vec2& p : generate_points(PointDistribution::uniform_disk, 7, drops_)) {
+    shape.points.push_back(0.7 * p);
+  }
+  const BodyId id = world_.create_body(body);
+  world_.create_shape(id, shape);
+}
+
+void Sandbox::step() {
+  if (dragged_ && world_.is_valid(*dragged_)) {
+    // Kinematic drag through the World API: each step, the grabbed point is given the
+    // velocity that moves it towards the cursor; spin is damped so the body does not whirl.
+    const BodyId body = *dragged_;
+    const Vec2 grabbed = world_.pose(body).apply(grab_local_);
+    Vec2 velocity = kDragRate * (cursor_ - grabbed);
+    if (velocity.norm() > kDragMaxSpeed) velocity *= kDragMaxSpeed / velocity.norm();
+    world_.set_linear_velocity(body, velocity);
+    world_.set_angular_velocity(body, 0.9 * world_.angular_velocity(body));
+    world_.set_awake(body, true);
+  }
+  world_.step();
+}
+
+void Sandbox::frame() {
+  if (!paused_ || step_once_) step();
+  step_once_ = false;
+  renderer_.begin_frame(background);
+  world_.draw(renderer_);
+  char line[200];
+  std::snprintf(line, sizeof line, "scene %s  step %llu  time %.2f s  bodies %zu  contacts %zu%s",
+                scene_.c_str(), static_cast<unsigned long long>(world_.step_count()), world_.time(),
+                world_.body_count(), world_.counters().touching_contacts,
+                paused_ ? "  [paused]" : "");
+  std::string text = line;
+  text += "\nlayers:";
+  for (const LayerKey& layer : kLayerKeys) {
+    if (renderer_.layers & layer.layer) text += std::string(" ") + layer.name;
+  }
+  renderer_.draw_overlay(text);
+  const int scale = renderer_.options().text_scale;
+  const Vec2 help_at(8, renderer_.height() - 8 - BitmapFont::glyph_height * scale);
+  renderer_.draw_screen_rect(
+      help_at - Vec2(4, 4),
+      Vec2(help_at.x() + BitmapFont::text_width(help) * scale + 4, renderer_.height() - 4),
+      Color{0, 0, 0, 0.55f});
+  renderer_.draw_screen_text(help_at, help, Color{0.9f, 0.9f, 0.6f, 1});
+  renderer_.end_frame();
+}
+
+}  // namespace mink::cli
