@@ -53,22 +53,28 @@ void Sandbox::reset() {
   world_ = build_world(builtin_scene(scene_));
   dragged_.reset();
   drops_ = 0;
-  // The camera shows every shape with room above for dropping hulls; it stays put afterwards
-  // so the mouse maps to the same place in the world.
-  Vec2 lower(0, 0);
-  Vec2 upper(0, 0);
-  bool first = true;
-  for (const BodyId body : world_.bodies()) {
-    for (const ShapeId shape : world_.body_shapes(body)) {
-      const Aabb box = world_.shape_aabb(shape);
-      lower = first ? box.lower : lower.cwiseMin(box.lower);
-      upper = first ? box.upper : upper.cwiseMax(box.upper);
-      first = false;
+  // The camera shows the moving bodies (every shape when nothing moves) with room around
+  // them and above for dropping hulls; it stays put afterwards so the mouse maps to the same
+  // place in the world. Grounds reach past the edges.
+  for (const bool moving_only : {true, false}) {
+    Vec2 lower(0, 0);
+    Vec2 upper(0, 0);
+    bool first = true;
+    for (const BodyId body : world_.bodies()) {
+      if (moving_only && world_.body_type(body) == BodyType::static_body) continue;
+      for (const ShapeId shape : world_.body_shapes(body)) {
+        const Aabb box = world_.shape_aabb(shape);
+        lower = first ? box.lower : lower.cwiseMin(box.lower);
+        upper = first ? box.upper : upper.cwiseMax(box.upper);
+        first = false;
+      }
     }
+    if (first) continue;
+    const Vec2 size = (upper - lower).cwiseMax(Vec2(2, 2));
+    renderer_.camera().fit(lower - Vec2(0.25 * size.x(), 0.1 * size.y()),
+                           upper + Vec2(0.25 * size.x(), 0.5 * size.y()), 24);
+    return;
   }
-  const Vec2 size = (upper - lower).cwiseMax(Vec2(1, 1));
-  upper.y() += 0.5 * size.y();
-  renderer_.camera().fit(lower, upper, 24);
 }
 
 void Sandbox::key(std::string_view name) {
@@ -122,9 +128,11 @@ void Sandbox::drop_hull(const Vec2& world_point) {
   body.type = BodyType::dynamic;
   body.position = world_point;
   ShapeDef shape;
-  for (const Vec2& p : generate_points(PointDistribution::uniform_disk, 7, drops_)) {
-    shape.points.push_back(0.7 * p);
-  }
+  shape.points = generate_points(PointDistribution::uniform_disk, 7, drops_);
+  // Centred on the points' mean, which lies inside their hull: the body is where the click was.
+  Vec2 mean(0, 0);
+  for (const Vec2& p : shape.points) mean += p / static_cast<Real>(shape.points.size());
+  for (Vec2& p : shape.points) p -= mean;
   const BodyId id = world_.create_body(body);
   world_.create_shape(id, shape);
 }
