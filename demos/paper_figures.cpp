@@ -360,7 +360,7 @@ void draw_difference_panel(Renderer& r, int count, int index, const GjkPicture& 
           count_text(picture.difference.size(), "vertex", "vertices") + "), " + simplex_text +
           " and the origin, which is " +
           (picture.gjk.overlap ? "inside: the hulls intersect" : "outside: the hulls are separate"),
-      lower, upper, 110);
+      lower, upper, std::min<Real>(110, 0.15 * r.width() / count));
   // Axes through the origin.
   const Vec2 span = upper - lower;
   r.draw_segment(Vec2(lower.x() - 0.05 * span.x(), 0), Vec2(upper.x() + 0.05 * span.x(), 0),
@@ -387,7 +387,7 @@ void draw_difference_panel(Renderer& r, int count, int index, const GjkPicture& 
     Real support = -std::numeric_limits<Real>::infinity();
     for (const Vec2& p : picture.difference) support = std::max(support, p.dot(d));
     const Vec2 along(-d.y(), d.x());
-    const Real reach = 0.6 * span.norm();
+    const Real reach = 0.5 * span.maxCoeff();
     for (Real t = -reach; t < reach; t += 0.04 * reach) {
       r.draw_segment(support * d + t * along, support * d + (t + 0.02 * reach) * along, kLower);
     }

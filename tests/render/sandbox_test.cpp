@@ -45,10 +45,10 @@ TEST(Sandbox, KeysPauseStepResetSwitchAndToggle) {
 }
 
 TEST(Sandbox, ClickOnEmptySpaceDropsAHullThere) {
-  Headless frame(mink::GlBackend::osmesa, 320, 240);
+  Headless frame(mink::GlBackend::osmesa, 480, 360);
   Sandbox sandbox(*frame.renderer, "pyramid");
   sandbox.key("space");
-  const Vec2 pixel(160.5, 40.5);
+  const Vec2 pixel(240.5, 90.5);  // below the overlay, above the pyramid
   const Vec2 world = frame.renderer->camera().pixel_to_world(pixel);
   ASSERT_TRUE(sandbox.world().query_point(world).empty());
   const std::size_t bodies = sandbox.world().body_count();
@@ -59,7 +59,7 @@ TEST(Sandbox, ClickOnEmptySpaceDropsAHullThere) {
   EXPECT_FALSE(sandbox.world().query_point(world).empty());
   sandbox.frame();
   const mink::Image image = frame.renderer->read_pixels();
-  EXPECT_EQ(image.at(160, 40), to_rgba(kDynamic));
+  EXPECT_EQ(image.at(240, 90), to_rgba(kDynamic));
 }
 
 TEST(Sandbox, DraggingPullsTheGrabbedBodyToTheCursor) {
