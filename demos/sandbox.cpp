@@ -71,7 +71,7 @@ void Sandbox::reset() {
     }
     if (first) continue;
     const Vec2 size = (upper - lower).cwiseMax(Vec2(2, 2));
-    renderer_.camera().fit(lower - Vec2(0.25 * size.x(), 0.1 * size.y()),
+    renderer_.camera().fit(lower - Vec2(0.25 * size.x(), 0.25 * size.y()),
                            upper + Vec2(0.25 * size.x(), 0.5 * size.y()), 24);
     return;
   }
@@ -158,23 +158,43 @@ void Sandbox::frame() {
   renderer_.begin_frame(background);
   world_.draw(renderer_);
   char line[200];
-  std::snprintf(line, sizeof line, "scene %s  step %llu  time %.2f s  bodies %zu  contacts %zu%s",
-                scene_.c_str(), static_cast<unsigned long long>(world_.step_count()), world_.time(),
-                world_.body_count(), world_.counters().touching_contacts,
-                paused_ ? "  [paused]" : "");
+  std::snprintf(
+      line, sizeof line,
+      "scene %s%s\nstep %llu  time %.2f s\nbodies %zu  contacts %zu\nlayers:", scene_.c_str(),
+      paused_ ? "  [paused]" : "", static_cast<unsigned long long>(world_.step_count()),
+      world_.time(), world_.body_count(), world_.counters().touching_contacts);
   std::string text = line;
-  text += "\nlayers:";
   for (const LayerKey& layer : kLayerKeys) {
-    if (renderer_.layers & layer.layer) text += std::string(" ") + layer.name;
+    if (renderer_.layers & layer.layer) text.append(" ").append(layer.name);
   }
   renderer_.draw_overlay(text);
+  // The help line at the bottom, broken between its entries when the window is narrow.
   const int scale = renderer_.options().text_scale;
-  const Vec2 help_at(8, renderer_.height() - 8 - BitmapFont::glyph_height * scale);
+  const int columns = std::max(1, (renderer_.width() - 16) / (BitmapFont::advance * scale));
+  std::string help_text;
+  int lines = 1;
+  std::size_t line_length = 0;
+  for (std::size_t begin = 0; begin < help.size();) {
+    const std::size_t end = std::min(help.find("  ", begin), help.size());
+    const std::string_view entry = help.substr(begin, end - begin);
+    if (line_length > 0 && line_length + 2 + entry.size() > static_cast<std::size_t>(columns)) {
+      help_text += '\n';
+      ++lines;
+      line_length = 0;
+    } else if (line_length > 0) {
+      help_text += "  ";
+      line_length += 2;
+    }
+    help_text += entry;
+    line_length += entry.size();
+    begin = end + 2;
+  }
+  const Vec2 help_at(8, renderer_.height() - 8 - BitmapFont::line_height * scale * lines);
   renderer_.draw_screen_rect(
       help_at - Vec2(4, 4),
-      Vec2(help_at.x() + BitmapFont::text_width(help) * scale + 4, renderer_.height() - 4),
+      Vec2(help_at.x() + BitmapFont::text_width(help_text) * scale + 4, renderer_.height() - 4),
       Color{0, 0, 0, 0.55f});
-  renderer_.draw_screen_text(help_at, help, Color{0.9f, 0.9f, 0.6f, 1});
+  renderer_.draw_screen_text(help_at, help_text, Color{0.9f, 0.9f, 0.6f, 1});
   renderer_.end_frame();
 }
 
