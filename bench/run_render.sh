@@ -5,8 +5,10 @@
 # Environment:
 #   MINK_BENCH_REPETITIONS=N   repetitions per case, the CSV keeps their median (default 5)
 #
-# Cases, at 1280 x 720 for the 5050-body scene (bench/render/bench_scene.hpp):
-#   draw_readback     one frame drawn and read back as RGBA, per headless backend
+# Cases, at 1280 x 720 for the engine's large_pyramid scene, 5050 boxes, drawn by World::draw
+# (bench/render/bench_scene.hpp):
+#   draw_readback     one frame (shapes) drawn and read back as RGBA, per headless backend
+#   draw_readback_contacts  the same with the contact points layer on
 #   readback_only     the readback alone
 #   record_triangles  the CPU share: draw calls turned into triangles, no GL
 #   encode_frame      one frame through ffmpeg, per encoder (30-frame clips, start and end

@@ -25,6 +25,7 @@ Action add_scenes_command(CLI::App& app, Streams streams);
 Action add_export_scene_command(CLI::App& app, Streams streams);
 Action add_run_command(CLI::App& app, Streams streams);
 Action add_compare_command(CLI::App& app, Streams streams);
+Action add_sandbox_command(CLI::App& app, Streams streams);
 
 // Runs `mink` with the given arguments; what main() does, callable from tests.
 int run(int argc, const char* const* argv, Streams streams);

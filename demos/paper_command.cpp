@@ -49,23 +49,13 @@ int run_paper(PaperOptions options, Streams streams) {
   RendererOptions renderer_options;
   renderer_options.samples = 4;  // smooth edges for figures
   Renderer renderer(*context, renderer_options);
-  int missing = 0;
   for (const PaperFigure& figure : paper_figures()) {
-    if (!figure.draw) {
-      streams.out << "not written: " << figure.file << " (" << figure.caption
-                  << "): " << figure.missing << '\n';
-      ++missing;
-      continue;
-    }
     renderer.begin_frame(Color{1, 1, 1, 1});
     figure.draw(renderer, options.settings);
     renderer.end_frame();
     const std::filesystem::path file = out / figure.file;
     write_png(file, renderer.read_pixels(3));
     streams.out << "wrote " << file.string() << " (" << figure.caption << ")\n";
-  }
-  if (missing > 0) {
-    streams.out << missing << " of the paper's figures wait for the narrowphase layer\n";
   }
   return kSuccess;
 }
@@ -76,8 +66,9 @@ Action add_paper_command(CLI::App& app, Streams streams) {
   auto options = std::make_shared<PaperOptions>();
   CLI::App* command = app.add_subcommand(
       "paper",
-      "Draw the paper's figures (8: point sets, 9: Chan, 10: divide and conquer; 12 and "
-      "13 once GJK exists) as PNG files, headless.");
+      "Draw the paper's figures (8: point sets, 9: Chan, 10: divide and conquer, 12: GJK "
+      "verdict after translate/scale, 13: Minkowski difference and final simplex) as PNG "
+      "files, headless.");
   command->add_option("--out", options->out, "directory for the PNG files")->required();
   command->add_option("--gl", options->gl, "headless GL backend: osmesa (default) or egl");
   command->add_option("--size", options->size, "image size WIDTHxHEIGHT (default 1200x700)");

@@ -3,9 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
+#include "mink/geometry/chan.hpp"
+#include "mink/geometry/divide_conquer.hpp"
 #include "mink/geometry/hull_trace.hpp"
 #include "mink/geometry/point_sets.hpp"
+#include "mink/geometry/polygon.hpp"
+#include "mink/geometry/transform.hpp"
+#include "mink/narrowphase/gjk_distance.hpp"
+#include "mink/narrowphase/minkowski_difference.hpp"
 #include "mink/render/bitmap_font.hpp"
 
 namespace mink::cli {
@@ -24,6 +31,7 @@ constexpr Color kSetA{0.13f, 0.4f, 0.8f, 1};
 constexpr Color kSetB{0.85f, 0.4f, 0.05f, 1};
 constexpr Color kUpper{0.8f, 0.1f, 0.45f, 1};
 constexpr Color kLower{0.1f, 0.6f, 0.3f, 1};
+constexpr Color kSimplex{0.1f, 0.55f, 0.2f, 1};
 
 // Room for four title lines at text scale 2.
 constexpr Real kTitleHeight = 84;
@@ -92,17 +100,21 @@ std::string wrap(const std::string& text, std::size_t columns) {
 }
 
 // Splits the frame into `count` side-by-side panels, each with a title line on top, and
-// points the camera at the canvas inside panel `index`.
-void panel(Renderer& r, int count, int index, const std::string& title) {
+// points the camera at the world box [lower, upper] inside panel `index`.
+void panel_of(Renderer& r, int count, int index, const std::string& title, const Vec2& lower,
+              const Vec2& upper, Real margin = kCanvasMargin) {
   const Real width = static_cast<Real>(r.width()) / count;
   const Vec2 top_left(width * index, 0);
   const Vec2 bottom_right(width * (index + 1), r.height());
-  r.camera().fit_region(kCanvasLower, kCanvasUpper, top_left + Vec2(0, kTitleHeight), bottom_right,
-                        kCanvasMargin);
+  r.camera().fit_region(lower, upper, top_left + Vec2(0, kTitleHeight), bottom_right, margin);
   const auto columns =
       static_cast<std::size_t>((width - 24) / (BitmapFont::advance * r.options().text_scale));
   r.draw_screen_text(top_left + Vec2(16, 10), wrap(title, columns), kInk);
-  // The canvas border.
+}
+
+// A panel showing the paper's 400 x 400 canvas, with its border.
+void panel(Renderer& r, int count, int index, const std::string& title) {
+  panel_of(r, count, index, title, kCanvasLower, kCanvasUpper);
   const Vec2 canvas[] = {{0, 0}, {400, 0}, {400, 400}, {0, 400}};
   r.draw_polygon(canvas, kNone, kFaint);
 }
@@ -231,21 +243,173 @@ void figure_10(Renderer& r, const PaperSettings& settings) {
   label(r, Vec2(split + gap, 200), "split", kFaint);
 }
 
+std::string fixed(Real value, int decimals = 1) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+std::string vec_text(const Vec2& v) {
+  char text[80];
+  std::snprintf(text, sizeof text, "(%.2f, %.2f)", v.x(), v.y());
+  return text;
+}
+
+std::string verdict_text(const GjkPicture& picture) {
+  std::string text = picture.gjk.overlap ? "GJK: INTERSECT" : "GJK: SEPARATE";
+  text += " after " + count_text(static_cast<std::size_t>(picture.gjk.iterations), "support point");
+  if (!picture.gjk.overlap) {
+    const PreparedHull a(ConvexHull::from_ccw_vertices(picture.hull_a));
+    const PreparedHull b(ConvexHull::from_ccw_vertices(picture.hull_b));
+    text += ", distance " + fixed(gjk_distance(a, Pose{}, b, Pose{}).distance);
+  }
+  return text;
+}
+
+void figure_12(Renderer& r, const PaperSettings& settings) {
+  const auto [set_a, set_b] = paper_point_sets(settings.seed, settings.count);
+  const ConvexHull original_a = chan_hull(set_a);
+  const ConvexHull original_b = divide_conquer_hull(set_b);
+  for (int i = 0; i < 2; ++i) {
+    const GjkPicture picture = gjk_picture(settings, i == 1);
+    panel(r, 2, i,
+          "Fig. 12" + std::string(1, static_cast<char>('a' + i)) + "  " +
+              (picture.apart ? "moved apart" : "overlapping") + ": A scaled by " +
+              vec_text(picture.scale_a) + " about its centroid (eq. 6), moved by " +
+              vec_text(picture.offset_a) + " (eq. 5); B scaled by " + vec_text(picture.scale_b) +
+              ", moved by " + vec_text(picture.offset_b) + "\n" + verdict_text(picture));
+    // The hulls before the transforms, faint, for comparison.
+    r.draw_polygon(original_a.vertices(), kNone, with_alpha(kSetA, 0.3f));
+    r.draw_polygon(original_b.vertices(), kNone, with_alpha(kSetB, 0.3f));
+    r.draw_polygon(picture.hull_a, with_alpha(kSetA, 0.18f), kSetA);
+    r.draw_polygon(picture.hull_b, with_alpha(kSetB, 0.18f), kSetB);
+    points(r, picture.hull_a, kSetA, 5);
+    points(r, picture.hull_b, kSetB, 5);
+    const Real gap = 8 / r.camera().pixels_per_unit();
+    label(r, area_properties(picture.hull_a).centroid - Vec2(6 * gap, 0), "A", kSetA);
+    label(r, area_properties(picture.hull_b).centroid, "B", kSetB);
+    label(r, Vec2(10, 385), picture.gjk.overlap ? "GJK: intersect" : "GJK: separate",
+          picture.gjk.overlap ? kUpper : kLower);
+  }
+}
+
+void figure_13(Renderer& r, const PaperSettings& settings) {
+  for (int i = 0; i < 2; ++i) draw_difference_panel(r, 2, i, gjk_picture(settings, i == 1));
+}
+
 }  // namespace
+
+GjkPicture gjk_picture(const PaperSettings& settings, bool apart) {
+  const auto [set_a, set_b] = paper_point_sets(settings.seed, settings.count);
+  GjkPicture picture;
+  picture.apart = apart;
+  // Unequal factors per axis show that eq. 6 scales x and y separately.
+  picture.scale_a = Vec2(0.45, 0.55);
+  picture.scale_b = Vec2(0.5, 0.4);
+  const ConvexHull original_a = chan_hull(set_a);
+  const ConvexHull original_b = divide_conquer_hull(set_b);
+  const std::vector<Vec2> scaled_a = scale_about(
+      original_a.vertices(), area_properties(original_a.vertices()).centroid, picture.scale_a);
+  const std::vector<Vec2> scaled_b = scale_about(
+      original_b.vertices(), area_properties(original_b.vertices()).centroid, picture.scale_b);
+  // Side by side around x = 200 with both centroids at y = 200: A's right end and B's left
+  // end 60 units into each other, or 40 units apart so a vertical line separates them.
+  const auto extent_x = [](const std::vector<Vec2>& ring, bool right) {
+    Real x = ring.front().x();
+    for (const Vec2& p : ring) x = right ? std::max(x, p.x()) : std::min(x, p.x());
+    return x;
+  };
+  const Real half = apart ? -20 : 30;
+  picture.offset_a =
+      Vec2(200 + half - extent_x(scaled_a, true), 200 - area_properties(scaled_a).centroid.y());
+  picture.offset_b =
+      Vec2(200 - half - extent_x(scaled_b, false), 200 - area_properties(scaled_b).centroid.y());
+  // Hulled again, by the same algorithms: rounding in the transforms may leave a vertex
+  // collinear, and the hull of an affinely mapped set is the mapped hull.
+  const ConvexHull hull_a = chan_hull(translate(scaled_a, picture.offset_a));
+  const ConvexHull hull_b = divide_conquer_hull(translate(scaled_b, picture.offset_b));
+  picture.hull_a.assign(hull_a.vertices().begin(), hull_a.vertices().end());
+  picture.hull_b.assign(hull_b.vertices().begin(), hull_b.vertices().end());
+  const PreparedHull prepared_a(hull_a);
+  const PreparedHull prepared_b(hull_b);
+  picture.gjk = gjk_overlap(prepared_a, Pose{}, prepared_b, Pose{});
+  picture.simplex = world_simplex(picture.gjk.simplex, prepared_a, Pose{}, prepared_b, Pose{});
+  picture.difference = minkowski_difference(picture.hull_a, picture.hull_b);
+  return picture;
+}
+
+void draw_difference_panel(Renderer& r, int count, int index, const GjkPicture& picture) {
+  Vec2 lower(0, 0);  // the box shown holds the difference and the origin
+  Vec2 upper(0, 0);
+  for (const Vec2& p : picture.difference) {
+    lower = lower.cwiseMin(p);
+    upper = upper.cwiseMax(p);
+  }
+  const int n = picture.simplex.count;
+  const std::string simplex_text =
+      n == 3   ? "GJK's final simplex (a triangle)"
+      : n == 2 ? "GJK's final simplex (a segment)"
+      : n == 1 ? "GJK's final simplex (a point)"
+               : "no simplex: the first support point w along d already fails to pass the "
+                 "origin (w.d < 0), so the line w.d = const separates";
+  // Room beside the picture for the vertex labels.
+  panel_of(
+      r, count, index,
+      "Fig. 13" + std::string(1, static_cast<char>('a' + index)) + "  " +
+          (picture.apart ? "moved apart" : "overlapping") + ": A - B (" +
+          count_text(picture.difference.size(), "vertex", "vertices") + "), " + simplex_text +
+          " and the origin, which is " +
+          (picture.gjk.overlap ? "inside: the hulls intersect" : "outside: the hulls are separate"),
+      lower, upper, std::min<Real>(110, 0.15 * r.width() / count));
+  // Axes through the origin.
+  const Vec2 span = upper - lower;
+  r.draw_segment(Vec2(lower.x() - 0.05 * span.x(), 0), Vec2(upper.x() + 0.05 * span.x(), 0),
+                 kFaint);
+  r.draw_segment(Vec2(0, lower.y() - 0.05 * span.y()), Vec2(0, upper.y() + 0.05 * span.y()),
+                 kFaint);
+  r.draw_polygon(picture.difference, kDifferenceFill, kInk);
+  std::vector<Vec2> simplex;
+  for (int i = 0; i < n; ++i)
+    simplex.push_back(picture.simplex.vertices[static_cast<std::size_t>(i)].point);
+  outline(r, simplex, kSimplex);
+  points(r, simplex, kSimplex, 9);
+  const Real unit = 1 / r.camera().pixels_per_unit();
+  for (int i = 0; i < n; ++i) {
+    const SimplexVertex& v = picture.simplex.vertices[static_cast<std::size_t>(i)];
+    char text[64];
+    std::snprintf(text, sizeof text, "w%d = a%u - b%u", i, static_cast<unsigned>(v.index_a),
+                  static_cast<unsigned>(v.index_b));
+    label(r, v.point + Vec2(10 * unit, -12 * unit), text, kSimplex);
+  }
+  if (!picture.gjk.overlap) {
+    // The separating direction from the origin, and the supporting line of A - B across it.
+    const Vec2 d = picture.gjk.separating_direction.normalized();
+    Real support = -std::numeric_limits<Real>::infinity();
+    for (const Vec2& p : picture.difference) support = std::max(support, p.dot(d));
+    const Vec2 along(-d.y(), d.x());
+    const Real reach = 0.5 * span.maxCoeff();
+    for (Real t = -reach; t < reach; t += 0.04 * reach) {
+      r.draw_segment(support * d + t * along, support * d + (t + 0.02 * reach) * along, kLower);
+    }
+    const Vec2 tip = 0.15 * span.norm() * d;
+    r.draw_segment(Vec2(0, 0), tip, kLower);
+    r.draw_point(tip, 8, kLower);
+    label(r, tip + Vec2(-30 * unit, 16 * unit), "d", kLower);
+  }
+  r.draw_point(Vec2(0, 0), kOriginMarkerPixels, kOriginMarker);
+  // Below right of the marker, clear of the ring just around it.
+  label(r, Vec2(12 * unit, -26 * unit), "origin", kOriginMarker);
+}
 
 std::vector<PaperFigure> paper_figures() {
   return {
-      {"fig08_point_sets.png", "the two random point sets", figure_8, ""},
-      {"fig09_chan.png", "Chan's groups and final hull", figure_9, ""},
+      {"fig08_point_sets.png", "the two random point sets", figure_8},
+      {"fig09_chan.png", "Chan's groups and final hull", figure_9},
       {"fig10_divide_conquer.png", "divide-and-conquer halves with the upper and lower tangents",
-       figure_10, ""},
-      // Figures 12 and 13 draw GJK's verdict, the Minkowski difference and the final simplex:
-      // they are drawn here once the narrowphase layer provides GJK.
-      {"fig12_gjk_verdict.png", "hulls after translate/scale with the GJK verdict", nullptr,
-       "needs GJK from the narrowphase layer"},
+       figure_10},
+      {"fig12_gjk_verdict.png", "hulls after translate/scale with the GJK verdict", figure_12},
       {"fig13_minkowski_difference.png",
-       "the Minkowski difference with the final simplex and the origin", nullptr,
-       "needs GJK and the Minkowski difference from the narrowphase layer"},
+       "the Minkowski difference with the final simplex and the origin", figure_13},
   };
 }
 

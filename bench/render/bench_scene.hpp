@@ -13,17 +13,14 @@ struct BenchScene {
   std::function<void(DebugDraw&)> draw;
   Vec2 lower;
   Vec2 upper;
-  std::size_t bodies = 0;
+  std::size_t bodies = 0;  // dynamic bodies
 };
 
-// 5050 unit boxes stacked in a pyramid of 100 rows, each tilted a little, drawn as filled
-// and outlined polygons the way World::draw draws shapes.
-BenchScene synthetic_pyramid(int rows = 100);
+// The engine's large_pyramid scene (5050 boxes in 100 rows on a ground), stepped `steps`
+// times so its contacts exist, drawn by World::draw with the drawer's layers.
+BenchScene large_pyramid(int steps = 10);
 
-// The scene the benchmark measures. When the engine lands this becomes its large_pyramid
-// scene stepped a few times, drawn by World::draw.
-inline BenchScene bench_scene() {
-  return synthetic_pyramid();
-}
+// The scene the benchmark measures, built once.
+const BenchScene& bench_scene();
 
 }  // namespace mink::bench

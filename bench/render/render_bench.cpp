@@ -5,6 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -26,10 +27,12 @@ struct Frame {
   std::unique_ptr<mink::Renderer> renderer;
   mink::bench::BenchScene scene = mink::bench::bench_scene();
 
-  explicit Frame(mink::GlBackend backend)
+  // Shapes only unless asked: the frame a person watches; contact points are a debug layer.
+  explicit Frame(mink::GlBackend backend, std::uint32_t layers = mink::draw_shapes)
       : context(mink::make_offscreen_context(backend, kWidth, kHeight)),
         renderer(std::make_unique<mink::Renderer>(*context)) {
     renderer->camera().fit(scene.lower, scene.upper, 16);
+    renderer->layers = layers;
   }
   ~Frame() { renderer.reset(); }
 
@@ -41,8 +44,8 @@ struct Frame {
   }
 };
 
-void draw_readback(benchmark::State& state, mink::GlBackend backend) {
-  Frame frame(backend);
+void draw_readback(benchmark::State& state, mink::GlBackend backend, std::uint32_t layers) {
+  Frame frame(backend, layers);
   mink::Image pixels;
   for (auto _ : state) {
     frame.draw();
@@ -106,10 +109,14 @@ void encode(benchmark::State& state, const std::string& codec) {
 int main(int argc, char** argv) {
   const std::string size = std::to_string(mink::bench::bench_scene().bodies);
   benchmark::RegisterBenchmark(("draw_readback/" + size + "/osmesa").c_str(), draw_readback,
-                               mink::GlBackend::osmesa)
+                               mink::GlBackend::osmesa, mink::draw_shapes)
       ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark(("draw_readback/" + size + "/egl").c_str(), draw_readback,
-                               mink::GlBackend::egl)
+                               mink::GlBackend::egl, mink::draw_shapes)
+      ->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark(("draw_readback_contacts/" + size + "/osmesa").c_str(),
+                               draw_readback, mink::GlBackend::osmesa,
+                               mink::draw_shapes | mink::draw_contact_points)
       ->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark(("readback_only/" + size + "/osmesa").c_str(), readback_only,
                                mink::GlBackend::osmesa)

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "mink/engine/scene.hpp"
+#include "mink/engine/world.hpp"
+#include "mink/render/renderer.hpp"
+
+namespace mink::cli {
+
+// The interactive sandbox, apart from any window: a world built from a built-in scene, the
+// person's input (keys by name, mouse at pixels) and the frame drawn into a Renderer. The
+// window loop of `mink sandbox` feeds it SDL events; tests feed it directly.
+//
+// Keys: space pauses, s single-steps while paused, r resets, n switches to the next scene,
+// 1-8 toggle the debug layers (shapes, AABBs, contact points, contact normals, broadphase
+// pairs, velocities, sleep state, centres of mass), Escape or q quits. The left mouse button
+// on a dynamic body drags it; on empty space it drops a random hull there.
+class Sandbox {
+ public:
+  // Throws InvalidArgumentError naming an unknown scene.
+  Sandbox(Renderer& renderer, std::string_view scene);
+
+  void key(std::string_view name);
+  void mouse_down(const Vec2& pixel);
+  void mouse_move(const Vec2& pixel);
+  void mouse_up(const Vec2& pixel);
+
+  // Advances the world one frame (1/60 s) unless paused, then draws the frame.
+  void frame();
+
+  bool quit_requested() const { return quit_; }
+  bool paused() const { return paused_; }
+  const std::string& scene() const { return scene_; }
+  const World& world() const { return world_; }
+  std::uint32_t layers() const { return renderer_.layers; }
+  // The body being dragged, if any.
+  std::optional<BodyId> dragged() const { return dragged_; }
+
+  static constexpr Color background{0.12f, 0.12f, 0.14f, 1};
+  static constexpr std::string_view help =
+      "drag: move body  click: drop hull  space: pause  s: step  r: reset  n: next scene  "
+      "1-8: layers  q: quit";
+
+ private:
+  void reset();
+  void step();
+  void drop_hull(const Vec2& world_point);
+
+  Renderer& renderer_;
+  std::string scene_;
+  World world_;
+  bool paused_ = false;
+  bool step_once_ = false;
+  bool quit_ = false;
+  std::uint64_t drops_ = 0;  // seeds the dropped hulls' shapes, so runs repeat exactly
+  std::optional<BodyId> dragged_;
+  Vec2 grab_local_{0, 0};  // the grabbed point in the dragged body's frame
+  Vec2 cursor_{0, 0};      // world
+};
+
+}  // namespace mink::cli
