@@ -270,7 +270,7 @@ void add(const std::string& name, F function) {
   benchmark::RegisterBenchmark(name.c_str(), function)
       ->Unit(benchmark::kNanosecond)
       ->MinTime(0.05)
-      ->Repetitions(7)
+      ->Repetitions(15)
       ->ReportAggregatesOnly(true);
 }
 

@@ -13,7 +13,44 @@ namespace mink::detail {
 
 namespace {
 constexpr std::size_t kTransformedLimit = 16;
+
+#if defined(__SSE2__)
+// Small hulls (boxes, octagons): Q's first 2 * kPairs padded vertices mapped into P's frame two
+// at a time, then per face of P the smallest offset over them. The faces are independent, so
+// their work overlaps.
+template <std::size_t kPairs>
+FaceSeparation small_face_separation(const PreparedHull& p, const PreparedHull& q,
+                                     const Pose& q_to_p) {
+  const std::span<const Vec2> pn = p.normals();
+  const __m128d c = _mm_set1_pd(q_to_p.rotation.cos);
+  const __m128d s = _mm_set1_pd(q_to_p.rotation.sin);
+  const __m128d tx = _mm_set1_pd(q_to_p.position.x());
+  const __m128d ty = _mm_set1_pd(q_to_p.position.y());
+  __m128d mx[kPairs];
+  __m128d my[kPairs];
+  for (std::size_t k = 0; k < kPairs; ++k) {
+    const __m128d x = _mm_load_pd(q.xs() + 2 * k);
+    const __m128d y = _mm_load_pd(q.ys() + 2 * k);
+    mx[k] = _mm_add_pd(_mm_sub_pd(_mm_mul_pd(c, x), _mm_mul_pd(s, y)), tx);
+    my[k] = _mm_add_pd(_mm_add_pd(_mm_mul_pd(s, x), _mm_mul_pd(c, y)), ty);
+  }
+  const std::span<const Real> offsets = p.face_offsets();
+  FaceSeparation best{-std::numeric_limits<Real>::infinity(), 0};
+  for (std::size_t i = 0; i < pn.size(); ++i) {
+    const __m128d nx = _mm_set1_pd(pn[i].x());
+    const __m128d ny = _mm_set1_pd(pn[i].y());
+    __m128d low = _mm_add_pd(_mm_mul_pd(nx, mx[0]), _mm_mul_pd(ny, my[0]));
+    for (std::size_t k = 1; k < kPairs; ++k) {
+      low = _mm_min_pd(low, _mm_add_pd(_mm_mul_pd(nx, mx[k]), _mm_mul_pd(ny, my[k])));
+    }
+    low = _mm_min_pd(low, _mm_shuffle_pd(low, low, 1));
+    const Real separation = _mm_cvtsd_f64(low) - offsets[i];
+    if (separation > best.separation) best = {separation, static_cast<std::uint32_t>(i)};
+  }
+  return best;
 }
+#endif
+}  // namespace
 
 FaceSeparation max_face_separation_brute(const PreparedHull& p, const PreparedHull& q,
                                          const Pose& q_to_p) {
@@ -37,34 +74,10 @@ FaceSeparation max_face_separation(const PreparedHull& p, const PreparedHull& q,
   FaceSeparation best{-std::numeric_limits<Real>::infinity(), 0};
 #if defined(__SSE2__)
   if (q.padded_size() == kSupportBlock && pv.size() <= kSupportBlock) {
-    // Small hulls (boxes): Q's vertices mapped into P's frame two at a time, then per face of
-    // P the smallest offset over one block of eight. The faces are independent, so their
-    // work overlaps.
-    const __m128d c = _mm_set1_pd(q_to_p.rotation.cos);
-    const __m128d s = _mm_set1_pd(q_to_p.rotation.sin);
-    const __m128d tx = _mm_set1_pd(q_to_p.position.x());
-    const __m128d ty = _mm_set1_pd(q_to_p.position.y());
-    __m128d mx[4];
-    __m128d my[4];
-    for (std::size_t k = 0; k < 4; ++k) {
-      const __m128d x = _mm_loadu_pd(q.xs() + 2 * k);
-      const __m128d y = _mm_loadu_pd(q.ys() + 2 * k);
-      mx[k] = _mm_add_pd(_mm_sub_pd(_mm_mul_pd(c, x), _mm_mul_pd(s, y)), tx);
-      my[k] = _mm_add_pd(_mm_add_pd(_mm_mul_pd(s, x), _mm_mul_pd(c, y)), ty);
-    }
-    const std::span<const Real> offsets = p.face_offsets();
-    for (std::size_t i = 0; i < pv.size(); ++i) {
-      const __m128d nx = _mm_set1_pd(pn[i].x());
-      const __m128d ny = _mm_set1_pd(pn[i].y());
-      __m128d low = _mm_add_pd(_mm_mul_pd(nx, mx[0]), _mm_mul_pd(ny, my[0]));
-      for (std::size_t k = 1; k < 4; ++k) {
-        low = _mm_min_pd(low, _mm_add_pd(_mm_mul_pd(nx, mx[k]), _mm_mul_pd(ny, my[k])));
-      }
-      low = _mm_min_pd(low, _mm_shuffle_pd(low, low, 1));
-      const Real separation = _mm_cvtsd_f64(low) - offsets[i];
-      if (separation > best.separation) best = {separation, static_cast<std::uint32_t>(i)};
-    }
-    return best;
+    // Q's first four padded entries hold all of a hull of up to four vertices (boxes): half
+    // the block.
+    return q.size() <= 4 ? small_face_separation<2>(p, q, q_to_p)
+                         : small_face_separation<4>(p, q, q_to_p);
   }
 #endif
   if (qv.size() <= kTransformedLimit && pv.size() <= kTransformedLimit) {

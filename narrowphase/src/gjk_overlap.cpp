@@ -8,8 +8,6 @@ namespace mink {
 
 namespace {
 
-const Vec2 kOrigin(0, 0);
-
 // The perpendicular of segment p -> q on the side of the origin, given that side (+1 left).
 Vec2 perpendicular_towards(const Vec2& p, const Vec2& q, int origin_side) {
   const Vec2 e = q - p;
@@ -44,7 +42,7 @@ Outcome run_gjk(const detail::PairFrame& frame, detail::LocalSimplex& s, int& it
     if (s.count == 2) {
       const Vec2& newest = s.vertices[1].point;
       const Vec2& older = s.vertices[0].point;
-      const int side = orient2d(newest, older, kOrigin);
+      const int side = detail::orient_about_origin(newest, older);
       // Collinear: the origin lies between the two points (older.d < 0 <= newest.d), so on
       // the segment: touching or overlapping.
       if (side == 0) return Outcome::overlap;
@@ -62,12 +60,12 @@ Outcome run_gjk(const detail::PairFrame& frame, detail::LocalSimplex& s, int& it
       s.vertices[0] = s.vertices[1];
       s.vertices[1] = s.vertices[2];
       s.count = 2;
-      const int side = orient2d(pa, pb, kOrigin);
+      const int side = detail::orient_about_origin(pa, pb);
       if (side == 0) return Outcome::overlap;
       d = perpendicular_towards(s.vertices[1].point, s.vertices[0].point, side);
       continue;
     }
-    const int side_ab = orient2d(pa, pb, kOrigin);
+    const int side_ab = detail::orient_about_origin(pa, pb);
     if (side_ab == -winding) {  // outside edge ab: drop c
       // The direction first: pa and pb refer into the simplex the shift below overwrites.
       d = perpendicular_towards(pa, pb, side_ab);
@@ -76,14 +74,14 @@ Outcome run_gjk(const detail::PairFrame& frame, detail::LocalSimplex& s, int& it
       s.count = 2;
       continue;
     }
-    const int side_ca = orient2d(pc, pa, kOrigin);
+    const int side_ca = detail::orient_about_origin(pc, pa);
     if (side_ca == -winding) {  // outside edge ca: drop b
       d = perpendicular_towards(pc, pa, side_ca);
       s.vertices[1] = s.vertices[2];
       s.count = 2;
       continue;
     }
-    const int side_bc = orient2d(pb, pc, kOrigin);
+    const int side_bc = detail::orient_about_origin(pb, pc);
     if (side_bc == -winding) {  // only through rounding: drop a and search again past bc
       s.count = 2;
       d = perpendicular_towards(pb, pc, side_bc);

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 
+#include "mink/geometry/orientation.hpp"
 #include "mink/narrowphase/pose.hpp"
 #include "mink/narrowphase/prepared_hull.hpp"
 #include "mink/narrowphase/simplex.hpp"
@@ -48,6 +49,7 @@ class PairFrame {
                       _mm_add_pd(_mm_add_pd(_mm_mul_pd(s, x), _mm_mul_pd(c, y)), ty));
       }
       mapped_ = true;
+      a_block_ = a.padded_size() == kSupportBlock;
     }
 #endif
   }
@@ -86,6 +88,16 @@ class PairFrame {
 
   // Support point of A - B along d (A's frame): eq. 4 of the paper.
   LocalVertex support(const Vec2& d) const {
+#if defined(__SSE2__)
+    if (a_block_) {
+      // Both hulls are single blocks: two straight scans, and the point from the same arrays
+      // (copies of the vertices, so the same values as the general path).
+      const auto ia = static_cast<std::uint32_t>(detail::support_block(a_.xs(), a_.ys(), d));
+      const auto ib = static_cast<std::uint32_t>(
+          detail::support_block(bx_.data(), by_.data(), Vec2(-d.x(), -d.y())));
+      return {Vec2(a_.xs()[ia] - bx_[ib], a_.ys()[ia] - by_[ib]), ia, ib};
+    }
+#endif
     const auto ia = static_cast<std::uint32_t>(support_index(a_, d));
 #if defined(__SSE2__)
     if (mapped_) {
@@ -116,9 +128,10 @@ class PairFrame {
   const PreparedHull& b_;
   Pose pose_a_;
   Pose relative_;
-  std::array<Real, kSupportBlock> bx_{};  // B mapped into A's frame, when B is small
-  std::array<Real, kSupportBlock> by_{};
+  alignas(16) std::array<Real, kSupportBlock> bx_{};  // B mapped into A's frame, when B is small
+  alignas(16) std::array<Real, kSupportBlock> by_{};
   bool mapped_ = false;
+  bool a_block_ = false;  // mapped_, and A is one block too
 };
 
 // Multiplies v by a power of two (exact) so its largest component lies in [1, 2) when it is
@@ -130,6 +143,20 @@ inline Vec2 rescaled_direction(const Vec2& v) {
   if ((m >= 0x1p-200 && m <= 0x1p200) || m == 0 || !std::isfinite(m)) return v;
   const int e = std::ilogb(m);
   return Vec2(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e));
+}
+
+// orient2d(p, q, origin): the same products and the same filter with c = 0 folded in (the
+// generic call subtracts a zero it cannot see is zero), so the same sign.
+inline int orient_about_origin(const Vec2& p, const Vec2& q) noexcept {
+  const Real det_left = p.x() * q.y();
+  const Real det_right = p.y() * q.x();
+  const Real det = det_left - det_right;
+  const Real det_sum = std::abs(det_left) + std::abs(det_right);
+  constexpr Real kRelativeBound = 3.3306690738754716e-16 + 7.888609052210118e-31;
+  if (det_sum >= 0x1p-900 && det_sum <= 0x1p+1000 && std::abs(det) > kRelativeBound * det_sum) {
+    return det > 0 ? 1 : -1;
+  }
+  return orient2d_exact(p, q, Vec2(0, 0));
 }
 
 inline Real cross(const Vec2& u, const Vec2& v) {

@@ -24,12 +24,14 @@ inline constexpr std::size_t kLinearSupportLimit = 16;
 namespace detail {
 // The first of 8 points (x and y arrays) farthest along `direction`, in one straight block of
 // two-wide instructions with a branch-free winner: hulls of up to 8 vertices (boxes,
-// Box2D-sized polygons), padded with copies of their first vertex.
+// Box2D-sized polygons), padded with copies of their first vertex. xs and ys must be 16-byte
+// aligned (PreparedHull's arrays are).
 inline std::size_t support_block(const Real* xs, const Real* ys, const Vec2& direction) noexcept {
   const __m128d dx = _mm_set1_pd(direction.x());
   const __m128d dy = _mm_set1_pd(direction.y());
+  // Aligned loads (xs and ys are 16-byte aligned), so they fold into the multiplies.
   auto values = [&](std::size_t i) {
-    return _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(xs + i), dx), _mm_mul_pd(_mm_loadu_pd(ys + i), dy));
+    return _mm_add_pd(_mm_mul_pd(_mm_load_pd(xs + i), dx), _mm_mul_pd(_mm_load_pd(ys + i), dy));
   };
   const __m128d v0 = values(0);
   const __m128d v1 = values(2);
@@ -37,10 +39,13 @@ inline std::size_t support_block(const Real* xs, const Real* ys, const Vec2& dir
   const __m128d v3 = values(6);
   __m128d top = _mm_max_pd(_mm_max_pd(v0, v1), _mm_max_pd(v2, v3));
   top = _mm_max_pd(top, _mm_shuffle_pd(top, top, 1));
-  const int reached =
-      _mm_movemask_pd(_mm_cmpeq_pd(v0, top)) | (_mm_movemask_pd(_mm_cmpeq_pd(v1, top)) << 2) |
-      (_mm_movemask_pd(_mm_cmpeq_pd(v2, top)) << 4) | (_mm_movemask_pd(_mm_cmpeq_pd(v3, top)) << 6);
-  return static_cast<std::size_t>(std::countr_zero(static_cast<unsigned>(reached)));
+  // The four all-ones-or-zero comparison masks narrowed into one byte mask, two bits a vertex.
+  const __m128i low = _mm_packs_epi32(_mm_castpd_si128(_mm_cmpeq_pd(v0, top)),
+                                      _mm_castpd_si128(_mm_cmpeq_pd(v1, top)));
+  const __m128i high = _mm_packs_epi32(_mm_castpd_si128(_mm_cmpeq_pd(v2, top)),
+                                       _mm_castpd_si128(_mm_cmpeq_pd(v3, top)));
+  const int reached = _mm_movemask_epi8(_mm_packs_epi16(low, high));
+  return static_cast<std::size_t>(std::countr_zero(static_cast<unsigned>(reached))) / 2;
 }
 }  // namespace detail
 #endif
