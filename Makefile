@@ -32,7 +32,7 @@ demo: deps-test
 	ffmpeg -loglevel error -y -i out/demo.mp4 -vf "select=not(mod(n\\,60))" -vsync vfr \
 	  out/frames/frame_%02d.png
 	$(BUILD_DIR)/bin/mink paper --out out/paper
-	$(BUILD_DIR)/bin/mink compare pyramid --steps 600 --out out/compare
+	$(BUILD_DIR)/bin/mink compare tumbler --steps 600 --out out/compare
 	@echo
 	@echo "Demo outputs:"
 	@echo "  video         out/demo.mp4 (tumbler, 10 s)"
