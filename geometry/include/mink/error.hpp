@@ -19,10 +19,12 @@ class InvalidArgumentError : public Error {
 };
 
 /// A coordinate that is NaN or infinite; `index` names the offending point.
+/// The message reads "point N has a non-finite coordinate".
 class NonFiniteInputError : public Error {
  public:
   explicit NonFiniteInputError(std::size_t index)
       : Error("point " + std::to_string(index) + " has a non-finite coordinate"), index_(index) {}
+  /// @brief Index of the offending point in the input it came from.
   std::size_t index() const noexcept { return index_; }
 
  private:

@@ -13,19 +13,20 @@
 
 namespace mink {
 
-// Support mapping (paper section 5, eq. 4): the vertex of a hull farthest along a direction.
-// Directions are in the hull's local frame unless a Pose is given. Ties go to the lowest index
-// in the linear scan; the faster searches return a vertex with the same dot product.
+/// @file
+/// Support mapping (paper section 5, eq. 4): the vertex of a hull farthest along a direction.
+/// Directions are in the hull's local frame unless a Pose is given. Ties go to the lowest index
+/// in the linear scan; the faster searches return a vertex with the same dot product.
 
-// Hulls up to this many vertices are scanned; larger ones are searched in O(log n).
+/// @brief Hulls up to this many vertices are scanned; larger ones are searched in O(log n).
 inline constexpr std::size_t kLinearSupportLimit = 16;
 
 #if defined(__SSE2__)
 namespace detail {
-// The first of 8 points (x and y arrays) farthest along `direction`, in one straight block of
-// two-wide instructions with a branch-free winner: hulls of up to 8 vertices (boxes,
-// Box2D-sized polygons), padded with copies of their first vertex. xs and ys must be 16-byte
-// aligned (PreparedHull's arrays are).
+/// The first of 8 points (x and y arrays) farthest along `direction`, in one straight block of
+/// two-wide instructions with a branch-free winner: hulls of up to 8 vertices (boxes,
+/// Box2D-sized polygons), padded with copies of their first vertex. xs and ys must be 16-byte
+/// aligned (PreparedHull's arrays are).
 inline std::size_t support_block(const Real* xs, const Real* ys, const Vec2& direction) noexcept {
   const __m128d dx = _mm_set1_pd(direction.x());
   const __m128d dy = _mm_set1_pd(direction.y());
@@ -50,11 +51,13 @@ inline std::size_t support_block(const Real* xs, const Real* ys, const Vec2& dir
 }  // namespace detail
 #endif
 
-// Every vertex, first maximum wins: the obviously-correct twin of the searches below, and the
-// fastest way for small hulls. Inline, so GJK's loop keeps the direction in registers. With
-// SSE2 it takes two vertices per instruction: one pass for the largest dot product, one for
-// the first vertex that reaches it (the same products, so the same values, as the scalar
-// loop).
+/// @brief Every vertex, first maximum wins: the obviously-correct twin of the searches below, and
+/// the fastest way for small hulls. Inline, so GJK's loop keeps the direction in registers. With
+/// SSE2 it takes two vertices per instruction: one pass for the largest dot product, one for
+/// the first vertex that reaches it (the same products, so the same values, as the scalar
+/// loop).
+/// @param direction local frame; need not be unit
+/// @return index into hull.vertices()
 inline std::size_t support_index_linear(const PreparedHull& hull, const Vec2& direction) noexcept {
   const Real* xs = hull.xs();
   const Real* ys = hull.ys();
@@ -98,22 +101,23 @@ inline std::size_t support_index_linear(const PreparedHull& hull, const Vec2& di
 #endif
 }
 
-// Binary search of the direction's pseudo-angle among the sorted edge-normal angles, then a
-// short climb to absorb rounding in the pseudo-angles. O(log n).
+/// @brief Binary search of the direction's pseudo-angle among the sorted edge-normal angles, then a
+/// short climb to absorb rounding in the pseudo-angles. O(log n).
 std::size_t support_index_binary(const PreparedHull& hull, const Vec2& direction) noexcept;
 
-// Hill climbing from `start` (the previous answer): O(1) when the direction changed little,
-// O(n) at worst.
+/// @brief Hill climbing from `start` (the previous answer): O(1) when the direction changed little,
+/// O(n) at worst.
 std::size_t support_index_climb(const PreparedHull& hull, const Vec2& direction,
                                 std::size_t start) noexcept;
 
-// Linear scan for small hulls, binary search for large ones.
+/// @brief Support vertex index along a local direction: linear scan for small hulls, binary search
+/// for large ones.
 inline std::size_t support_index(const PreparedHull& hull, const Vec2& direction) noexcept {
   return hull.size() <= kLinearSupportLimit ? support_index_linear(hull, direction)
                                             : support_index_binary(hull, direction);
 }
 
-// The support vertex of the posed hull along a world direction, in world coordinates.
+/// @brief The support vertex of the posed hull along a world direction, in world coordinates.
 inline Vec2 support_point(const PreparedHull& hull, const Pose& pose, const Vec2& direction) {
   return pose.apply(hull.vertices()[support_index(hull, pose.rotation.apply_inverse(direction))]);
 }
