@@ -6,20 +6,24 @@
 
 namespace mink {
 
+/// @brief How a body moves.
+/// static_body: never moves; kinematic: moves by its set velocity, unaffected by forces and
+/// contacts; dynamic: moved by gravity, forces and contacts.
 enum class BodyType : std::uint8_t { static_body, kinematic, dynamic };
 
+/// @brief Everything World::create_body needs; plain data. Units: metres, radians, seconds.
 struct BodyDef {
-  BodyType type = BodyType::static_body;
-  Vec2 position{0, 0};         // of the body origin, the frame its shapes are given in
-  Real angle = 0;              // radians
-  Vec2 linear_velocity{0, 0};  // of the body origin (as in Box2D)
-  Real angular_velocity = 0;
-  Real linear_damping = 0;
-  Real angular_damping = 0;
-  Real gravity_scale = 1;
-  bool allow_sleep = true;
-  bool awake = true;
-  std::uint64_t user_data = 0;
+  BodyType type = BodyType::static_body;  ///< static unless set
+  Vec2 position{0, 0};                    ///< of the body origin, the frame its shapes are given in
+  Real angle = 0;                         ///< radians
+  Vec2 linear_velocity{0, 0};             ///< of the body origin (as in Box2D)
+  Real angular_velocity = 0;              ///< rad/s, counter-clockwise positive
+  Real linear_damping = 0;                ///< >= 0, slows linear velocity over time
+  Real angular_damping = 0;               ///< >= 0, slows angular velocity over time
+  Real gravity_scale = 1;                 ///< multiplies the world's gravity for this body
+  bool allow_sleep = true;                ///< false keeps the body awake
+  bool awake = true;                      ///< false creates it asleep
+  std::uint64_t user_data = 0;            ///< anything the caller wants back from World::user_data
 };
 
 }  // namespace mink

@@ -11,36 +11,50 @@
 
 namespace mink {
 
+/// @brief One body of a scene with its shapes.
 struct SceneBody {
-  BodyDef body;
-  std::vector<ShapeDef> shapes;
+  BodyDef body;                  ///< where and how it moves
+  std::vector<ShapeDef> shapes;  ///< created in order
 };
 
-// A scene is plain data: world settings plus body definitions with their shapes, so it can be
-// written to and read from files. Bodies are created in order.
+/// @brief A scene is plain data: world settings plus body definitions with their shapes, so it can
+/// be written to and read from files. Bodies are created in order.
 struct SceneDef {
-  WorldDef world;
-  std::vector<SceneBody> bodies;
+  WorldDef world;                 ///< world settings
+  std::vector<SceneBody> bodies;  ///< created in order
 };
 
+/// @brief A world with the scene's settings, bodies and shapes; bodies defined asleep stay
+/// asleep.
+/// @throws InvalidArgumentError (or a hull error) for a bad definition, as World and
+/// World::create_shape would.
 World build_world(const SceneDef& scene);
 
-// The current state of a world as a scene: every live body (slot order) with its pose,
-// velocities and settings, each shape as its hull's vertices. build_world(capture_scene(w))
-// recreates the bodies where they are now (contact impulses are not kept).
+/// @brief The current state of a world as a scene: every live body (slot order) with its pose,
+/// velocities and settings, each shape as its hull's vertices. build_world(capture_scene(w))
+/// recreates the bodies where they are now (contact impulses are not kept).
 SceneDef capture_scene(const World& world);
 
-// Built-in scenes: large_pyramid, pyramid, many_pyramids, rain, tumbler, paper.
+/// @brief Built-in scenes: large_pyramid, pyramid, many_pyramids, rain, tumbler, paper.
 std::span<const std::string_view> builtin_scene_names() noexcept;
-// Throws InvalidArgumentError naming an unknown scene.
+/// @brief The built-in scene of that name (see builtin_scene_names).
+/// @throws InvalidArgumentError naming an unknown scene.
 SceneDef builtin_scene(std::string_view name);
 
 // The building blocks of the built-ins, for tests and benchmarks that need other sizes.
-// A pyramid of unit boxes with `base_count` boxes in its bottom row, its bottom-centre at
-// `base_center`.
+
+/// @brief Appends a pyramid of dynamic square boxes (side `box_size`, unit by default) with
+/// `base_count` boxes in its bottom row, its bottom-centre at `base_center`.
 void add_pyramid(SceneDef& scene, int base_count, const Vec2& base_center, Real box_size = 1);
+/// @brief One pyramid of `base_count` boxes on a static ground.
+/// @throws InvalidArgumentError when base_count < 1.
 SceneDef pyramid_scene(int base_count);
+/// @brief A grid of rows x columns pyramids, each row on its own thin static floor.
+/// @throws InvalidArgumentError unless all three counts are positive.
 SceneDef many_pyramids_scene(int rows, int columns, int base_count);
+/// @brief `body_count` random convex bodies falling into a walled box; the same `seed` gives
+/// the same scene.
+/// @throws InvalidArgumentError when body_count < 0.
 SceneDef rain_scene(int body_count, std::uint64_t seed);
 
 }  // namespace mink

@@ -6,8 +6,8 @@
 
 namespace mink {
 
-// A BodyId or ShapeId used after its object was destroyed (or never issued by this world).
-// The message names the id.
+/// @brief A BodyId or ShapeId used after its object was destroyed (or never issued by this world).
+/// The message names the id.
 class StaleIdError : public Error {
  public:
   using Error::Error;

@@ -20,103 +20,199 @@ namespace mink {
 
 struct WorldState;
 
+/// @brief A World::ray_cast hit: which shape, and where.
 struct ShapeRayHit {
-  ShapeId shape;
-  RayHit hit;
+  ShapeId shape;  ///< the shape hit first
+  RayHit hit;     ///< where, in world coordinates
 };
 
+/// @brief What World::advance did.
 struct AdvanceResult {
-  int steps = 0;   // fixed steps run by this call
-  Real alpha = 0;  // leftover time / time step, in [0, 1): blend previous and current poses
+  int steps = 0;   ///< fixed steps run by this call
+  Real alpha = 0;  ///< leftover time / time step, in [0, 1): blend previous and current poses
 };
 
-// A 2D rigid-body world: bodies with convex shapes, a sweep-and-prune broadphase, GJK-based
-// manifolds and a soft-step contact solver. Single threaded; every call is deterministic.
-// Any id argument that does not name a live object throws StaleIdError naming the id.
+/// @brief A 2D rigid-body world: bodies with convex shapes, a sweep-and-prune broadphase, GJK-based
+/// manifolds and a soft-step contact solver. Single threaded; every call is deterministic.
+/// Any id argument that does not name a live object throws StaleIdError naming the id.
 class World {
  public:
-  // Throws InvalidArgumentError naming the first bad field.
+  /// @brief Creates an empty world.
+  /// @throws InvalidArgumentError naming the first bad field of `def`.
   explicit World(const WorldDef& def = {});
   ~World();
+  /// @brief Worlds move (ids stay valid in the moved-to world) but do not copy.
   World(World&&) noexcept;
   World& operator=(World&&) noexcept;
   World(const World&) = delete;
   World& operator=(const World&) = delete;
 
+  /// @brief The settings in force (set_gravity and enable_sleep update them).
   const WorldDef& def() const noexcept;
+  /// @brief Gravity acceleration, world frame (m/s^2).
+  /// @throws InvalidArgumentError when not finite.
   void set_gravity(const Vec2& gravity);
+  /// @brief Turns sleeping on or off; turning it off wakes every body.
   void enable_sleep(bool enabled);
 
-  // Bodies and shapes. Destruction is allowed at any time between steps: contacts of the
-  // destroyed shapes end (with end events when they touched) and their neighbours wake.
-  BodyId create_body(const BodyDef& def);
-  void destroy_body(BodyId id);
-  ShapeId create_shape(BodyId body, const ShapeDef& def);
-  void destroy_shape(ShapeId id);
-  bool is_valid(BodyId id) const noexcept;
-  bool is_valid(ShapeId id) const noexcept;
-  std::size_t body_count() const noexcept;
-  std::size_t shape_count() const noexcept;
-  std::vector<BodyId> bodies() const;  // live bodies in slot order
+  /// @name Bodies and shapes
+  /// Destruction is allowed at any time between steps: contacts of the destroyed shapes end
+  /// (with end events when they touched) and their neighbours wake.
+  /// @{
 
-  // Body state. Position is the body origin; the centre of mass is world_center.
+  /// @brief Adds a body with no shapes (so no mass yet).
+  /// @throws InvalidArgumentError naming a non-finite or negative field of `def`.
+  BodyId create_body(const BodyDef& def);
+  /// @brief Destroys the body and all its shapes; `id` and their ids become stale.
+  void destroy_body(BodyId id);
+  /// @brief Hulls `def.points` (body-local) and attaches the shape; the body's mass is updated.
+  /// @throws StaleIdError for a dead `body`, and whatever make_shape_hull throws for `def`.
+  ShapeId create_shape(BodyId body, const ShapeDef& def);
+  /// @brief Detaches and destroys the shape; `id` becomes stale.
+  void destroy_shape(ShapeId id);
+  /// @brief True when `id` names a live body of this world.
+  bool is_valid(BodyId id) const noexcept;
+  /// @brief True when `id` names a live shape of this world.
+  bool is_valid(ShapeId id) const noexcept;
+  /// @brief Number of live bodies.
+  std::size_t body_count() const noexcept;
+  /// @brief Number of live shapes.
+  std::size_t shape_count() const noexcept;
+  std::vector<BodyId> bodies() const;  ///< live bodies in slot order
+
+  /// @}
+
+  /// @name Body state
+  /// Position is the body origin; the centre of mass is world_center.
+  /// @{
+
+  /// @brief Static, kinematic or dynamic.
   BodyType body_type(BodyId id) const;
+  /// @brief World position of the body origin.
   Vec2 position(BodyId id) const;
+  /// @brief Orientation in radians, counter-clockwise.
   Real angle(BodyId id) const;
+  /// @brief Position and rotation together: maps body-local points to world.
   Pose pose(BodyId id) const;
+  /// @brief Centre of mass in world coordinates.
   Vec2 world_center(BodyId id) const;
+  /// @brief Centre of mass in body-local coordinates.
   Vec2 local_center(BodyId id) const;
+  /// @brief Velocity of the body origin, world frame (m/s).
   Vec2 linear_velocity(BodyId id) const;
+  /// @brief Angular velocity in rad/s, counter-clockwise positive.
   Real angular_velocity(BodyId id) const;
+  /// @brief Mass in kg from the shapes' areas and densities. 0 for static and kinematic
+  /// bodies; a dynamic body with no massive shape gets 1 (and no rotational inertia).
   Real mass(BodyId id) const;
-  Real rotational_inertia(BodyId id) const;  // about the centre of mass
+  Real rotational_inertia(BodyId id) const;  ///< about the centre of mass
+  /// @brief As given in BodyDef::linear_damping.
   Real linear_damping(BodyId id) const;
+  /// @brief As given in BodyDef::angular_damping.
   Real angular_damping(BodyId id) const;
+  /// @brief As given in BodyDef::gravity_scale.
   Real gravity_scale(BodyId id) const;
+  /// @brief As given in BodyDef::allow_sleep.
   bool allow_sleep(BodyId id) const;
+  /// @brief False while the body sleeps.
   bool is_awake(BodyId id) const;
+  /// @brief As given in BodyDef::user_data.
   std::uint64_t user_data(BodyId id) const;
+  /// @brief The body's live shapes.
   std::vector<ShapeId> body_shapes(BodyId id) const;
 
-  // Setters wake the body. set_transform moves it without velocity (a teleport).
+  /// @}
+
+  /// @name Moving bodies
+  /// Setters wake the body. Non-finite arguments throw InvalidArgumentError naming the body.
+  /// Forces, torques and impulses on non-dynamic bodies are ignored.
+  /// @{
+
+  /// @brief Moves the body origin to `position` (world) at `angle` (radians) without velocity
+  /// (a teleport).
   void set_transform(BodyId id, const Vec2& position, Real angle);
+  /// @brief Velocity of the body origin, world frame (m/s).
   void set_linear_velocity(BodyId id, const Vec2& velocity);
+  /// @brief Angular velocity in rad/s, counter-clockwise positive.
   void set_angular_velocity(BodyId id, Real velocity);
-  void apply_force(BodyId id, const Vec2& force, const Vec2& world_point);  // until next step
+  /// @brief A force (N, world frame) at a world point, applied during the next step only.
+  void apply_force(BodyId id, const Vec2& force, const Vec2& world_point);  ///< until next step
+  /// @brief A torque (N m) applied during the next step only.
   void apply_torque(BodyId id, Real torque);
+  /// @brief Changes the velocity at once by an impulse (N s, world frame) at a world point.
   void apply_linear_impulse(BodyId id, const Vec2& impulse, const Vec2& world_point);
+  /// @brief Wakes the body, or puts a dynamic body to sleep (its velocity is zeroed). No effect on
+  /// static bodies.
   void set_awake(BodyId id, bool awake);
 
-  // Shapes. The hull is in body-local coordinates.
-  BodyId shape_body(ShapeId id) const;
-  const ConvexHull& shape_hull(ShapeId id) const;
-  Real shape_density(ShapeId id) const;
-  Real shape_friction(ShapeId id) const;
-  Real shape_restitution(ShapeId id) const;
-  HullAlgorithm shape_algorithm(ShapeId id) const;
-  Aabb shape_aabb(ShapeId id) const;  // tight, at the current pose
+  /// @}
 
-  // Time stepping.
-  void step();  // exactly one fixed step
-  // Runs the whole steps that fit in the accumulated time (at most max_steps_per_advance).
-  // Events then cover every step the call ran.
+  /// @name Shapes
+  /// @{
+
+  /// @brief The body the shape is attached to.
+  BodyId shape_body(ShapeId id) const;
+  /// @brief The shape's hull, in body-local coordinates (scale already applied).
+  const ConvexHull& shape_hull(ShapeId id) const;
+  /// @brief As given in ShapeDef::density (kg/m^2).
+  Real shape_density(ShapeId id) const;
+  /// @brief As given in ShapeDef::friction.
+  Real shape_friction(ShapeId id) const;
+  /// @brief As given in ShapeDef::restitution.
+  Real shape_restitution(ShapeId id) const;
+  /// @brief The algorithm that built the hull.
+  HullAlgorithm shape_algorithm(ShapeId id) const;
+  /// @brief World-space bounding box of the shape.
+  Aabb shape_aabb(ShapeId id) const;  ///< tight, at the current pose
+
+  /// @}
+
+  /// @name Time stepping
+  /// @{
+
+  /// @brief Runs exactly one fixed step of WorldDef::time_step; events then cover that step.
+  void step();  ///< exactly one fixed step
+  /// @brief Runs the whole steps that fit in the accumulated time (at most max_steps_per_advance).
+  /// Events then cover every step the call ran.
+  /// @param frame_seconds wall time since the last call, added to the accumulated time
+  /// @throws InvalidArgumentError when `frame_seconds` is negative or not finite.
   AdvanceResult advance(Real frame_seconds);
+  /// @brief Simulated time in seconds: step_count() times the time step.
   Real time() const noexcept;
+  /// @brief Fixed steps run since the world was made.
   std::uint64_t step_count() const noexcept;
 
-  // What the last step (or advance) saw.
+  /// @}
+
+  /// @name What the last step (or advance) saw
+  /// @{
+
+  /// @brief Shape pairs that started touching.
   std::span<const ContactBeginEvent> contact_begin_events() const noexcept;
+  /// @brief Shape pairs that stopped touching (or lost a shape).
   std::span<const ContactEndEvent> contact_end_events() const noexcept;
+  /// @brief Pair, contact, island and solver counts.
   const StepCounters& counters() const noexcept;
+  /// @brief Wall time per phase, in milliseconds.
   const StepProfile& profile() const noexcept;
 
-  // Queries against the current poses, exact (not just the broadphase boxes). Shapes come in
-  // slot order.
+  /// @}
+
+  /// @name Queries
+  /// Against the current poses, exact (not just the broadphase boxes). Shapes come in slot
+  /// order; all coordinates are world.
+  /// @{
+
+  /// @brief Shapes whose hull overlaps `box`.
   std::vector<ShapeId> query_aabb(const Aabb& box) const;
+  /// @brief Shapes whose hull contains `point` (boundary included).
   std::vector<ShapeId> query_point(const Vec2& point) const;
-  // Closest hit along origin -> origin + translation, if any.
+  /// @brief Closest hit along origin -> origin + translation, if any.
   std::optional<ShapeRayHit> ray_cast(const Vec2& origin, const Vec2& translation) const;
 
+  /// @}
+
+  /// @brief Describes the world to `draw` in world coordinates, the layers `draw.layers` selects.
   void draw(DebugDraw& draw) const;
 
  private:

@@ -4,40 +4,43 @@
 
 namespace mink {
 
-// World settings. Defaults follow Box2D v3 where it has an equivalent (units: metres,
-// kilograms, seconds).
+/// @brief World settings. Defaults follow Box2D v3 where it has an equivalent (units: metres,
+/// kilograms, seconds).
 struct WorldDef {
-  Vec2 gravity{0, -10};
-  Real time_step = 1.0 / 60.0;  // one fixed step; advance() runs whole steps only
-  int substeps = 5;             // soft-step substeps per step
-  // Contact softness: stiffness (cycles per second, capped at a quarter of the substep rate)
-  // and damping ratio of the soft contact spring. A soft contact under load F sags by
-  // F / (m (2 pi hertz)^2): Box2D v3's 30 Hz lets a 100-row pyramid sink by about a metre,
-  // 60 Hz by a quarter of that. Stiff springs need short substeps to stay stable (60 Hz
-  // with 4 substeps sways), hence 5 substeps rather than Box2D v3's 4 (6 is steadier
-  // still, at 20% more solver time).
-  Real contact_hertz = 60;
-  Real contact_damping_ratio = 10;
-  // Fastest speed at which overlap is pushed apart, so deep overlap resolves without popping.
+  Vec2 gravity{0, -10};         ///< m/s^2, world frame
+  Real time_step = 1.0 / 60.0;  ///< one fixed step; advance() runs whole steps only
+  int substeps = 5;             ///< soft-step substeps per step
+  /// @name Contact softness
+  /// Contact softness: stiffness (cycles per second, capped at a quarter of the substep rate)
+  /// and damping ratio of the soft contact spring. A soft contact under load F sags by
+  /// F / (m (2 pi hertz)^2): Box2D v3's 30 Hz lets a 100-row pyramid sink by about a metre,
+  /// 60 Hz by a quarter of that. Stiff springs need short substeps to stay stable (60 Hz
+  /// with 4 substeps sways), hence 5 substeps rather than Box2D v3's 4 (6 is steadier
+  /// still, at 20% more solver time).
+  /// @{
+  Real contact_hertz = 60;          ///< spring stiffness, cycles per second
+  Real contact_damping_ratio = 10;  ///< spring damping ratio (1: critical)
+  /// @}
+  /// Fastest speed at which overlap is pushed apart, so deep overlap resolves without popping.
   Real contact_push_max_velocity = 3;
-  // Approach speeds below this do not bounce, whatever the restitution.
+  /// Approach speeds below this do not bounce, whatever the restitution.
   Real restitution_threshold = 1;
-  // Allowed overlap; contacts are generated this many times four before shapes touch.
+  /// Allowed overlap; contacts are generated this many times four before shapes touch.
   Real linear_slop = 0.005;
-  Real max_linear_speed = 400;
-  bool enable_sleep = true;
-  Real time_to_sleep = 0.5;
-  Real linear_sleep_tolerance = 0.05;    // m/s
-  Real angular_sleep_tolerance = 0.035;  // rad/s (about 2 degrees per second)
-  // advance() runs at most this many steps per call, dropping the rest of a long frame so a
-  // slow frame cannot snowball into ever slower ones.
+  Real max_linear_speed = 400;           ///< m/s; faster bodies are clamped to it
+  bool enable_sleep = true;              ///< let resting bodies sleep (see World::enable_sleep)
+  Real time_to_sleep = 0.5;              ///< seconds a body must rest before it may sleep
+  Real linear_sleep_tolerance = 0.05;    ///< m/s
+  Real angular_sleep_tolerance = 0.035;  ///< rad/s (about 2 degrees per second)
+  /// advance() runs at most this many steps per call, dropping the rest of a long frame so a
+  /// slow frame cannot snowball into ever slower ones.
   int max_steps_per_advance = 8;
-  // Solve independent contacts four at a time in SIMD lanes. false runs the same order one
-  // contact at a time (the slow twin; results are bitwise equal).
+  /// Solve independent contacts four at a time in SIMD lanes. false runs the same order one
+  /// contact at a time (the slow twin; results are bitwise equal).
   bool simd_solver = true;
-  // Keep a contact's manifold features while the pair's relative pose stays within a tenth of
-  // the linear slop of where they were found, updating only the separations. false runs the
-  // narrowphase for every pair every step.
+  /// Keep a contact's manifold features while the pair's relative pose stays within a tenth of
+  /// the linear slop of where they were found, updating only the separations. false runs the
+  /// narrowphase for every pair every step.
   bool reuse_manifolds = true;
 };
 
