@@ -6,20 +6,23 @@
 
 namespace mink {
 
-// 8-bit pixels, rows top to bottom, each row left to right, channels interleaved (RGB or
-// RGBA), no padding between rows.
+/// @brief An 8-bit image in memory.
+/// 8-bit pixels, rows top to bottom, each row left to right, channels interleaved (RGB or
+/// RGBA), no padding between rows.
 struct Image {
-  int width = 0;
-  int height = 0;
-  int channels = 4;
-  std::vector<std::uint8_t> pixels;
+  int width = 0;                     ///< pixels
+  int height = 0;                    ///< pixels
+  int channels = 4;                  ///< 3 (RGB) or 4 (RGBA)
+  std::vector<std::uint8_t> pixels;  ///< width * height * channels bytes
 
+  /// @brief An empty 0 x 0 image.
   Image() = default;
-  // Zero-filled. Throws InvalidArgumentError for a negative size or channels other than 3 or 4.
+  /// @brief A zero-filled image.
+  /// @throws InvalidArgumentError for a negative size or channels other than 3 or 4.
   Image(int width, int height, int channels);
 
-  // Channels of pixel (x, y), y = 0 the top row; alpha is 255 for RGB images. Throws
-  // InvalidArgumentError outside the image.
+  /// @brief Channels of pixel (x, y), y = 0 the top row; alpha is 255 for RGB images.
+  /// @throws InvalidArgumentError outside the image.
   std::array<std::uint8_t, 4> at(int x, int y) const;
   bool operator==(const Image&) const = default;
 };

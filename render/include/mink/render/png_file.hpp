@@ -6,11 +6,12 @@
 
 namespace mink {
 
-// Writes an 8-bit RGB or RGBA PNG. Throws OutputError naming the file when it cannot be
-// written, InvalidArgumentError for an empty or inconsistent image.
+/// @brief Writes an 8-bit RGB or RGBA PNG.
+/// @throws OutputError naming the file when it cannot be written
+/// @throws InvalidArgumentError for an empty or inconsistent image
 void write_png(const std::filesystem::path& path, const Image& image);
-// Reads any PNG libpng reads, converted to 8-bit RGBA. Throws OutputError naming the file when
-// it is missing or not a PNG.
+/// @brief Reads any PNG libpng reads, converted to 8-bit RGBA.
+/// @throws OutputError naming the file when it is missing or not a PNG.
 Image read_png(const std::filesystem::path& path);
 
 }  // namespace mink

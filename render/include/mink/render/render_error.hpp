@@ -6,14 +6,14 @@
 
 namespace mink {
 
-// A GL context could not be made or a GL call failed (library missing, no such platform,
-// version too old, shader or framebuffer incomplete). The message names the backend and step.
+/// @brief A GL context could not be made or a GL call failed (library missing, no such platform,
+/// version too old, shader or framebuffer incomplete). The message names the backend and step.
 class GlContextError : public Error {
  public:
   using Error::Error;
 };
 
-// An output could not be written: a PNG file, or the ffmpeg process behind a video.
+/// @brief An output could not be written: a PNG file, or the ffmpeg process behind a video.
 class OutputError : public Error {
  public:
   using Error::Error;

@@ -9,32 +9,39 @@
 
 namespace mink {
 
+/// @brief How a VideoWriter encodes.
 struct VideoOptions {
-  int fps = 60;
-  // Encoder passed to ffmpeg's -c:v. Empty: libx264 when this ffmpeg has it, else mpeg4.
+  int fps = 60;  ///< frames per second, 1..1000
+  /// Encoder passed to ffmpeg's -c:v. Empty: libx264 when this ffmpeg has it, else mpeg4.
   std::string codec;
-  std::filesystem::path ffmpeg = "ffmpeg";
+  std::filesystem::path ffmpeg = "ffmpeg";  ///< the ffmpeg program, looked up in PATH
 };
 
-// An MP4 (or any container ffmpeg picks from the file name) made by piping raw RGB24 frames
-// into an ffmpeg process. Errors from ffmpeg, a missing ffmpeg included, surface as
-// OutputError with the end of ffmpeg's own log.
+/// @brief An MP4 (or any container ffmpeg picks from the file name) made by piping raw RGB24 frames
+/// into an ffmpeg process. Errors from ffmpeg, a missing ffmpeg included, surface as
+/// OutputError with the end of ffmpeg's own log.
 class VideoWriter {
  public:
-  // Starts ffmpeg. Throws InvalidArgumentError for a size that is not positive and even
-  // (yuv420p needs even sizes) or fps outside 1..1000, OutputError when ffmpeg cannot start.
+  /// @brief Starts ffmpeg writing `path`.
+  /// @throws InvalidArgumentError for a size that is not positive and even (yuv420p needs even
+  /// sizes) or fps outside 1..1000
+  /// @throws OutputError when ffmpeg cannot start
   VideoWriter(std::filesystem::path path, int width, int height, VideoOptions options = {});
-  ~VideoWriter();  // closes if close() was not called; errors then are only logged to stderr
+  ~VideoWriter();  ///< closes if close() was not called; errors then are only logged to stderr
   VideoWriter(const VideoWriter&) = delete;
   VideoWriter& operator=(const VideoWriter&) = delete;
 
-  // One frame, RGB or RGBA (alpha dropped), of the writer's size. Throws
-  // InvalidArgumentError for another size, OutputError when ffmpeg has gone.
+  /// @brief One frame, RGB or RGBA (alpha dropped), of the writer's size.
+  /// @throws InvalidArgumentError for another size
+  /// @throws OutputError when ffmpeg has gone
   void write_frame(const Image& frame);
-  // Waits for ffmpeg to finish the file; throws OutputError when it failed.
+  /// @brief Waits for ffmpeg to finish the file.
+  /// @throws OutputError when it failed.
   void close();
 
+  /// @brief Frames written so far.
   int frames_written() const { return frames_; }
+  /// @brief The encoder in use (the chosen default when VideoOptions::codec was empty).
   const std::string& codec() const { return codec_; }
 
  private:
@@ -52,7 +59,7 @@ class VideoWriter {
   std::vector<std::uint8_t> rgb_;
 };
 
-// True when `ffmpeg -encoders` lists `codec`.
+/// @brief True when `ffmpeg -encoders` lists `codec`.
 bool ffmpeg_has_encoder(const std::filesystem::path& ffmpeg, const std::string& codec);
 
 }  // namespace mink
