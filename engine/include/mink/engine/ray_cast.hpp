@@ -17,7 +17,8 @@ struct RayHit {
 /// @brief First hit of the segment origin -> origin + translation against a posed hull, entering
 /// from outside. A ray starting inside the hull does not hit it (as in Box2D). Clips the segment
 /// against each edge's half plane.
-/// @param hull the hull in local coordinates, placed in the world by `pose`
+/// @param hull the hull in local coordinates
+/// @param pose places the hull in the world
 /// @param origin, translation the segment, world coordinates
 /// @return the hit, or nothing when the segment misses or starts inside
 std::optional<RayHit> ray_cast_hull(const ConvexHull& hull, const Pose& pose, const Vec2& origin,

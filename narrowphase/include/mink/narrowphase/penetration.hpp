@@ -22,6 +22,8 @@ struct PenetrationResult {
 /// expansion reaches its cap, the answer comes from the face-normal test instead, which is
 /// exact in 2D because A - B has exactly the edge normals of A and B. Call only for
 /// overlapping pairs; for separated ones the result has depth 0.
+/// @param a, b the hulls, in their local frames
+/// @param pose_a, pose_b where the hulls are in the world
 /// @param start the final simplex of gjk_distance for the same hulls and poses
 PenetrationResult penetration(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
                               const Pose& pose_b, const SimplexCache& start);

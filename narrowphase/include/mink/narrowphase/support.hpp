@@ -56,6 +56,7 @@ inline std::size_t support_block(const Real* xs, const Real* ys, const Vec2& dir
 /// SSE2 it takes two vertices per instruction: one pass for the largest dot product, one for
 /// the first vertex that reaches it (the same products, so the same values, as the scalar
 /// loop).
+/// @param hull the hull to search
 /// @param direction local frame; need not be unit
 /// @return index into hull.vertices()
 inline std::size_t support_index_linear(const PreparedHull& hull, const Vec2& direction) noexcept {

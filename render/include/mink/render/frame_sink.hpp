@@ -24,6 +24,8 @@ class FrameSink {
 };
 
 /// @brief Opens the sink `path` names for frames of width x height.
+/// @param path a video file (by extension) or a directory for PNGs
+/// @param width, height frame size in pixels
 /// @param video encoder settings, used only when `path` names a video file
 /// @throws OutputError when the directory cannot be made or ffmpeg cannot start
 /// @throws InvalidArgumentError for a bad size

@@ -35,6 +35,7 @@ struct ScriptEvent {
 };
 
 /// @brief Parses a whole script (format: see ScriptEvent).
+/// @param in the script text
 /// @param source the script's name for messages, such as its file name
 /// @throws InvalidArgumentError naming `source` and the line for anything malformed.
 std::vector<ScriptEvent> parse_input_script(std::istream& in, std::string_view source);

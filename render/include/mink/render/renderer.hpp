@@ -40,6 +40,7 @@ class Renderer final : public DebugDraw {
   /// @brief Makes the context current and sets up the shader, buffers and the framebuffer frames
   /// are drawn into (a window's frames are then copied to the window).
   /// @param context must outlive the renderer
+  /// @param options see RendererOptions
   /// @throws GlContextError when a GL step fails
   /// @throws InvalidArgumentError for options out of range
   explicit Renderer(GlContext& context, RendererOptions options = {});
