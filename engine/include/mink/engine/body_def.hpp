@@ -11,7 +11,7 @@ namespace mink {
 /// contacts; dynamic: moved by gravity, forces and contacts.
 enum class BodyType : std::uint8_t { static_body, kinematic, dynamic };
 
-/// @brief Everything World::create_body needs; plain data. Units: metres, radians, seconds.
+/// Everything World::create_body needs; plain data. Units: metres, radians, seconds.
 struct BodyDef {
   BodyType type = BodyType::static_body;  ///< static unless set
   Vec2 position{0, 0};                    ///< of the body origin, the frame its shapes are given in

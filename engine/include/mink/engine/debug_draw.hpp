@@ -26,7 +26,7 @@ enum DrawLayer : std::uint32_t {
   draw_centers_of_mass = 1u << 7,   ///< a point at each dynamic body's centre of mass
 };
 
-/// @brief The only link between the engine and rendering: the engine describes what to draw in
+/// The only link between the engine and rendering: the engine describes what to draw in
 /// world coordinates, the render layer implements this with GL. The engine never includes GL.
 class DebugDraw {
  public:

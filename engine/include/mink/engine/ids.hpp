@@ -6,7 +6,7 @@
 
 namespace mink {
 
-/// @brief Handle to a body.
+/// Handle to a body.
 /// Handles in the style of Box2D v3: a slot index plus the slot's generation when the handle
 /// was issued. Destroying the object bumps the generation, so a kept handle is detected as
 /// stale instead of silently reaching whatever reuses the slot.

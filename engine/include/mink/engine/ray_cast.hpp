@@ -14,7 +14,7 @@ struct RayHit {
   Vec2 normal{0, 0};  ///< unit, outward from the hull at the hit
 };
 
-/// @brief First hit of the segment origin -> origin + translation against a posed hull, entering
+/// First hit of the segment origin -> origin + translation against a posed hull, entering
 /// from outside. A ray starting inside the hull does not hit it (as in Box2D). Clips the segment
 /// against each edge's half plane.
 /// @param hull the hull in local coordinates

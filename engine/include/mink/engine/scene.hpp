@@ -17,7 +17,7 @@ struct SceneBody {
   std::vector<ShapeDef> shapes;  ///< created in order
 };
 
-/// @brief A scene is plain data: world settings plus body definitions with their shapes, so it can
+/// A scene is plain data: world settings plus body definitions with their shapes, so it can
 /// be written to and read from files. Bodies are created in order.
 struct SceneDef {
   WorldDef world;                 ///< world settings

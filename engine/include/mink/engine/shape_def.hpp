@@ -14,7 +14,7 @@ struct ShapeScale {
   Vec2 factor{1, 1};       ///< per-axis factors
 };
 
-/// @brief A convex shape: `points` (body-local) are hulled at creation with `algorithm`, so any
+/// A convex shape: `points` (body-local) are hulled at creation with `algorithm`, so any
 /// point set will do; extra interior points cost nothing afterwards. Plain data.
 struct ShapeDef {
   std::vector<Vec2> points;                       ///< body-local; hulled at creation

@@ -6,7 +6,7 @@
 
 namespace mink {
 
-/// @brief A BodyId or ShapeId used after its object was destroyed (or never issued by this world).
+/// A BodyId or ShapeId used after its object was destroyed (or never issued by this world).
 /// The message names the id.
 class StaleIdError : public Error {
  public:

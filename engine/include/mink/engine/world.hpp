@@ -32,7 +32,7 @@ struct AdvanceResult {
   Real alpha = 0;  ///< leftover time / time step, in [0, 1): blend previous and current poses
 };
 
-/// @brief A 2D rigid-body world: bodies with convex shapes, a sweep-and-prune broadphase, GJK-based
+/// A 2D rigid-body world: bodies with convex shapes, a sweep-and-prune broadphase, GJK-based
 /// manifolds and a soft-step contact solver. Single threaded; every call is deterministic.
 /// Any id argument that does not name a live object throws StaleIdError naming the id.
 class World {
@@ -141,7 +141,7 @@ class World {
   void apply_torque(BodyId id, Real torque);
   /// @brief Changes the velocity at once by an impulse (N s, world frame) at a world point.
   void apply_linear_impulse(BodyId id, const Vec2& impulse, const Vec2& world_point);
-  /// @brief Wakes the body, or puts a dynamic body to sleep (its velocity is zeroed). No effect on
+  /// Wakes the body, or puts a dynamic body to sleep (its velocity is zeroed). No effect on
   /// static bodies.
   void set_awake(BodyId id, bool awake);
 
@@ -172,7 +172,7 @@ class World {
 
   /// @brief Runs exactly one fixed step of WorldDef::time_step; events then cover that step.
   void step();  ///< exactly one fixed step
-  /// @brief Runs the whole steps that fit in the accumulated time (at most max_steps_per_advance).
+  /// Runs the whole steps that fit in the accumulated time (at most max_steps_per_advance).
   /// Events then cover every step the call ran.
   /// @param frame_seconds wall time since the last call, added to the accumulated time
   /// @throws InvalidArgumentError when `frame_seconds` is negative or not finite.

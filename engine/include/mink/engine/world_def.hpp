@@ -4,7 +4,7 @@
 
 namespace mink {
 
-/// @brief World settings. Defaults follow Box2D v3 where it has an equivalent (units: metres,
+/// World settings. Defaults follow Box2D v3 where it has an equivalent (units: metres,
 /// kilograms, seconds).
 struct WorldDef {
   Vec2 gravity{0, -10};         ///< m/s^2, world frame

@@ -8,7 +8,7 @@
 
 namespace mink {
 
-/// @brief What gjk_distance found. Points and normal are in world coordinates.
+/// What gjk_distance found. Points and normal are in world coordinates.
 struct DistanceResult {
   bool overlap = false;  ///< the origin is in the final simplex: touching or overlapping
   Real distance = 0;     ///< 0 when overlapping
@@ -20,7 +20,7 @@ struct DistanceResult {
   SimplexCache simplex;                ///< the final simplex as vertex pairs; EPA starts from it
 };
 
-/// @brief GJK distance: the point of A - B nearest the origin by Voronoi-region simplex reduction.
+/// GJK distance: the point of A - B nearest the origin by Voronoi-region simplex reduction.
 /// With a cache, starts from the previous query's simplex and writes the new one back; a pair
 /// that moved little converges in one or two iterations. Always terminates: stops on a repeated
 /// vertex, on no progress, or at an iteration cap.
@@ -37,7 +37,7 @@ struct BruteDistance {
   Vec2 normal{0, 0};  ///< unit, from A towards B
 };
 
-/// @brief Distance between disjoint convex polygons (world vertices, CCW) by scanning every vertex
+/// Distance between disjoint convex polygons (world vertices, CCW) by scanning every vertex
 /// against every edge of the other: the nearest pair always involves a vertex of one and an
 /// edge of the other. O(n m): the slow twin of gjk_distance.
 BruteDistance hull_distance_brute(std::span<const Vec2> a, std::span<const Vec2> b);

@@ -22,7 +22,7 @@ struct Manifold {
   int point_count = 0;                    ///< 0, 1 or 2
 };
 
-/// @brief Contact manifold of two posed hulls: up to two points, each with its separation. Pairs
+/// Contact manifold of two posed hulls: up to two points, each with its separation. Pairs
 /// farther apart than `speculative_distance` give point_count == 0.
 /// @param a, b the hulls, in their local frames
 /// @param pose_a, pose_b where the hulls are in the world

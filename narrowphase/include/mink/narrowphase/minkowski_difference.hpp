@@ -8,7 +8,7 @@
 
 namespace mink {
 
-/// @brief The Minkowski difference A - B = {a - b} of two convex polygons given counter-clockwise:
+/// The Minkowski difference A - B = {a - b} of two convex polygons given counter-clockwise:
 /// a convex polygon, counter-clockwise from its lowest (then leftmost) vertex. Built in
 /// O(n + m) by merging the edge sequences of A and -B by angle; parallel edges merge into one,
 /// so every vertex is a difference a_i - b_j of input vertices. For pictures and tests: GJK

@@ -16,7 +16,7 @@ struct PenetrationResult {
   bool used_face_test = false;  ///< the start was degenerate or the cap was hit: see below
 };
 
-/// @brief Penetration depth and normal of overlapping hulls by EPA on the 2D Minkowski difference,
+/// Penetration depth and normal of overlapping hulls by EPA on the 2D Minkowski difference,
 /// started from the final simplex of gjk_distance (a triangle around the origin). When that
 /// simplex is not a proper triangle (the origin on its boundary: touching or nearly) or the
 /// expansion reaches its cap, the answer comes from the face-normal test instead, which is
@@ -28,7 +28,7 @@ struct PenetrationResult {
 PenetrationResult penetration(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
                               const Pose& pose_b, const SimplexCache& start);
 
-/// @brief The face-normal (separating-axis) answer alone: the minimum over all edge normals of A
+/// The face-normal (separating-axis) answer alone: the minimum over all edge normals of A
 /// and B of the overlap along it. O(n + m).
 PenetrationResult penetration_by_faces(const PreparedHull& a, const Pose& pose_a,
                                        const PreparedHull& b, const Pose& pose_b);

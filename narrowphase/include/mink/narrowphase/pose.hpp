@@ -24,7 +24,7 @@ struct Rotation {
   }
 };
 
-/// @brief A rigid transform: rotate about the local origin, then translate. Shapes keep their hull
+/// A rigid transform: rotate about the local origin, then translate. Shapes keep their hull
 /// in local coordinates (scale is applied once, when the shape is created) and are posed by this.
 struct Pose {
   Vec2 position{0, 0};  ///< where the local origin lies in the world

@@ -17,7 +17,7 @@ inline constexpr std::size_t kSupportBlock = 8;
 /// creation (centroid, edge normals, search structures for large vertex counts).
 class PreparedHull {
  public:
-  /// @brief Precomputes everything from `hull` (local coordinates). O(n).
+  /// Precomputes everything from `hull` (local coordinates). O(n).
   explicit PreparedHull(ConvexHull hull);
 
   /// @brief The hull itself, in local coordinates.
@@ -64,7 +64,7 @@ class PreparedHull {
   Real radius_ = 0;
 };
 
-/// @brief A monotone stand-in for atan2(y, x) mapped to [0, 4): increases with the angle measured
+/// A monotone stand-in for atan2(y, x) mapped to [0, 4): increases with the angle measured
 /// counter-clockwise from the +x axis, with no trigonometry. Zero vector gives 1 (any value).
 inline Real pseudo_angle(const Vec2& v) noexcept {
   const Real sum = std::abs(v.x()) + std::abs(v.y());

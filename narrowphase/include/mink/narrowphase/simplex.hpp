@@ -25,7 +25,7 @@ struct Simplex {
   int count = 0;                            ///< 0 to 3
 };
 
-/// @brief A simplex as the vertex pairs (index into A, index into B) it came from, oldest first.
+/// A simplex as the vertex pairs (index into A, index into B) it came from, oldest first.
 /// Query results hold their final simplex this way (cheap to fill); world_simplex turns it into
 /// points. Passed back into gjk_distance, the next query on the same pair starts from it and
 /// converges in one or two iterations when the poses changed little. count == 0 means cold.

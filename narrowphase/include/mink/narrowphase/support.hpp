@@ -14,7 +14,9 @@
 namespace mink {
 
 /// @file
-/// Support mapping (paper section 5, eq. 4): the vertex of a hull farthest along a direction.
+/// @brief Support mapping (paper section 5, eq. 4): the vertex of a hull farthest along a
+/// direction.
+///
 /// Directions are in the hull's local frame unless a Pose is given. Ties go to the lowest index
 /// in the linear scan; the faster searches return a vertex with the same dot product.
 
@@ -51,7 +53,7 @@ inline std::size_t support_block(const Real* xs, const Real* ys, const Vec2& dir
 }  // namespace detail
 #endif
 
-/// @brief Every vertex, first maximum wins: the obviously-correct twin of the searches below, and
+/// Every vertex, first maximum wins: the obviously-correct twin of the searches below, and
 /// the fastest way for small hulls. Inline, so GJK's loop keeps the direction in registers. With
 /// SSE2 it takes two vertices per instruction: one pass for the largest dot product, one for
 /// the first vertex that reaches it (the same products, so the same values, as the scalar
@@ -102,11 +104,11 @@ inline std::size_t support_index_linear(const PreparedHull& hull, const Vec2& di
 #endif
 }
 
-/// @brief Binary search of the direction's pseudo-angle among the sorted edge-normal angles, then a
+/// Binary search of the direction's pseudo-angle among the sorted edge-normal angles, then a
 /// short climb to absorb rounding in the pseudo-angles. O(log n).
 std::size_t support_index_binary(const PreparedHull& hull, const Vec2& direction) noexcept;
 
-/// @brief Hill climbing from `start` (the previous answer): O(1) when the direction changed little,
+/// Hill climbing from `start` (the previous answer): O(1) when the direction changed little,
 /// O(n) at worst.
 std::size_t support_index_climb(const PreparedHull& hull, const Vec2& direction,
                                 std::size_t start) noexcept;

@@ -21,7 +21,7 @@ struct BitmapFont {
   /// @brief True when pixel (x, y) of glyph c is set (y = 0 the top row); throws like row().
   static bool pixel(char c, int x, int y) { return (row(c, y) >> (glyph_width - 1 - x)) & 1u; }
 
-  /// @brief Size in font pixels of `text` as drawn ('\n' starts a new line): the widest line's
+  /// Size in font pixels of `text` as drawn ('\n' starts a new line): the widest line's
   /// advance and the number of lines times line_height. Throws like row() for any character
   /// other than '\n' outside first..last.
   static int text_width(std::string_view text);

@@ -4,7 +4,7 @@
 
 namespace mink {
 
-/// @brief Maps world coordinates (y up) to pixels (x right, y down, origin at the top-left corner
+/// Maps world coordinates (y up) to pixels (x right, y down, origin at the top-left corner
 /// of the frame, pixel (i, j) covering [i, i + 1) x [j, j + 1)). The scale is the same on both
 /// axes, so shapes keep their proportions.
 class Camera {

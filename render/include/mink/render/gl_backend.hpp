@@ -5,7 +5,7 @@
 
 namespace mink {
 
-/// @brief Where headless frames are drawn. OSMesa is the default; EGL surfaceless is for systems
+/// Where headless frames are drawn. OSMesa is the default; EGL surfaceless is for systems
 /// whose Mesa no longer ships OSMesa (removed in Mesa 25.1).
 enum class GlBackend { osmesa, egl };
 

@@ -6,7 +6,7 @@
 
 namespace mink {
 
-/// @brief A current OpenGL 3.3 core context. The renderer draws through function pointers the
+/// A current OpenGL 3.3 core context. The renderer draws through function pointers the
 /// context resolves, so OSMesa, EGL and an SDL2 window can live in one program without their
 /// GL libraries clashing.
 class GlContext {
@@ -20,7 +20,7 @@ class GlContext {
   virtual void make_current() = 0;
   /// @brief Address of a GL entry point, or null when the implementation lacks it.
   virtual void* proc_address(const char* name) const = 0;
-  /// @brief False for a window. The renderer always draws into its own framebuffer object of
+  /// False for a window. The renderer always draws into its own framebuffer object of
   /// width() x height(); a window (offscreen() false) then gets each frame copied to its
   /// framebuffer 0 and present()ed.
   virtual bool offscreen() const = 0;

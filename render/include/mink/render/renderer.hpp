@@ -30,7 +30,7 @@ struct RendererOptions {
   bool opaque_outline_fast_path = true;
 };
 
-/// @brief The OpenGL 3.3 core renderer: one path for OSMesa, EGL and an SDL2 window. Every draw
+/// The OpenGL 3.3 core renderer: one path for OSMesa, EGL and an SDL2 window. Every draw
 /// call of a frame is turned into pixel-space triangles on the CPU and drawn in one batch, in call
 /// order, so later calls paint over earlier ones and alpha blends as expected.
 ///

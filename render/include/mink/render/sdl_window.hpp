@@ -9,7 +9,7 @@ struct SDL_Window;
 
 namespace mink {
 
-/// @brief An SDL2 window with an OpenGL 3.3 core context: the interactive counterpart of the
+/// An SDL2 window with an OpenGL 3.3 core context: the interactive counterpart of the
 /// offscreen contexts, drawn by the same Renderer (frames are copied to the window and swapped
 /// on Renderer::end_frame). Needs a display; under Xvfb it runs headless too. Link
 /// mink::render_window.
@@ -38,7 +38,7 @@ class SdlWindow final : public GlContext {
 
   /// @brief The SDL window, for event handling and titles.
   SDL_Window* handle() const { return window_; }
-  /// @brief Queues the SDL events a person's input would make (a key press and release, a mouse
+  /// Queues the SDL events a person's input would make (a key press and release, a mouse
   /// button or motion at a pixel of this window), so scripted runs go through the same event
   /// handling. Screenshot and quit events are the caller's to act on and push nothing. Throws
   /// InvalidArgumentError for a key name SDL does not know.

@@ -17,7 +17,7 @@ struct VideoOptions {
   std::filesystem::path ffmpeg = "ffmpeg";  ///< the ffmpeg program, looked up in PATH
 };
 
-/// @brief An MP4 (or any container ffmpeg picks from the file name) made by piping raw RGB24 frames
+/// An MP4 (or any container ffmpeg picks from the file name) made by piping raw RGB24 frames
 /// into an ffmpeg process. Errors from ffmpeg, a missing ffmpeg included, surface as
 /// OutputError with the end of ffmpeg's own log.
 class VideoWriter {
