@@ -117,8 +117,8 @@ void World::draw(DebugDraw& draw) const {
       polygon.clear();
       for (const Vec2& v : s.hull->vertices()) polygon.push_back(b.pose().apply(v));
       Color color = b.type == BodyType::static_body ? static_color
-                        : b.type == BodyType::kinematic ? kinematic_color
-                                                        : dynamic_color;
+                    : b.type == BodyType::kinematic ? kinematic_color
+                                                    : dynamic_color;
       if ((draw.layers & draw_sleep_state) && b.type == BodyType::dynamic && !b.awake) {
         color = sleeping_color;
       }
