@@ -1,10 +1,10 @@
 #include "contact_compare.hpp"
 
-#include <box2d/b2_distance.h>
 #include <box2d/box2d.h>
 
 #include <algorithm>
 
+#include "box2d_distance.hpp"
 #include "box2d_scene.hpp"
 #include "mink/error.hpp"
 #include "mink/narrowphase/gjk_distance.hpp"
@@ -27,27 +27,12 @@ struct OracleShape {
 bool box2d_overlap(std::span<const Vec2> a, const Pose& pose_a, std::span<const Vec2> b,
                    const Pose& pose_b) {
   const Vec2 origin = pose_a.position;
-  std::vector<b2Vec2> va;
-  std::vector<b2Vec2> vb;
-  for (const Vec2& v : a) {
-    const Vec2 w = pose_a.apply(v) - origin;
-    va.emplace_back(static_cast<float>(w.x()), static_cast<float>(w.y()));
-  }
-  for (const Vec2& v : b) {
-    const Vec2 w = pose_b.apply(v) - origin;
-    vb.emplace_back(static_cast<float>(w.x()), static_cast<float>(w.y()));
-  }
-  b2DistanceInput input;
-  input.proxyA.Set(va.data(), static_cast<int32>(va.size()), 0.0f);
-  input.proxyB.Set(vb.data(), static_cast<int32>(vb.size()), 0.0f);
-  input.transformA.SetIdentity();
-  input.transformB.SetIdentity();
-  input.useRadii = false;
-  b2SimplexCache cache;
-  cache.count = 0;
-  b2DistanceOutput output;
-  b2Distance(&output, &cache, &input);
-  return output.distance == 0.0f;
+  // Taken relative to A's origin before rounding to float, so rounding does not blur the band.
+  std::vector<Vec2> wa;
+  std::vector<Vec2> wb;
+  for (const Vec2& v : a) wa.push_back(pose_a.apply(v) - origin);
+  for (const Vec2& v : b) wb.push_back(pose_b.apply(v) - origin);
+  return interop::box2d_distance(wa, wb).overlap;
 }
 
 void run_oracle(const World& world, const std::vector<OracleShape>& shapes, long long step,

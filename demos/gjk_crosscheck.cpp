@@ -1,6 +1,6 @@
 #include "gjk_crosscheck.hpp"
 
-#include <box2d/b2_distance.h>
+#include "box2d_distance.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -89,32 +89,6 @@ CrosscheckPair random_crosscheck_pair(std::mt19937_64& rng) {
 
 namespace {
 
-struct Box2dAnswer {
-  bool overlap;
-  double distance;
-  int iterations;
-};
-
-Box2dAnswer box2d_distance(const CrosscheckPair& pair) {
-  std::vector<b2Vec2> va;
-  std::vector<b2Vec2> vb;
-  for (const Vec2& v : pair.a)
-    va.emplace_back(static_cast<float>(v.x()), static_cast<float>(v.y()));
-  for (const Vec2& v : pair.b)
-    vb.emplace_back(static_cast<float>(v.x()), static_cast<float>(v.y()));
-  b2DistanceInput input;
-  input.proxyA.Set(va.data(), static_cast<int32>(va.size()), 0.0f);
-  input.proxyB.Set(vb.data(), static_cast<int32>(vb.size()), 0.0f);
-  input.transformA.SetIdentity();
-  input.transformB.SetIdentity();
-  input.useRadii = false;
-  b2SimplexCache cache;
-  cache.count = 0;
-  b2DistanceOutput output;
-  b2Distance(&output, &cache, &input);
-  return {output.distance == 0.0f, output.distance, output.iterations};
-}
-
 const char* verdict(bool overlap) {
   return overlap ? "overlap" : "apart";
 }
@@ -135,7 +109,7 @@ CrosscheckReport run_gjk_crosscheck(std::uint64_t pairs, std::uint64_t seed, dou
     const DistanceResult ours = gjk_distance(a, identity, b, identity);
     const double gap =
         ours.overlap ? -penetration(a, identity, b, identity, ours.simplex).depth : ours.distance;
-    const Box2dAnswer theirs = box2d_distance(pair);
+    const interop::Box2dDistance theirs = interop::box2d_distance(pair.a, pair.b);
     ++report.pairs;
     report.overlapping += ours.overlap;
     if (ours.overlap != theirs.overlap) {
