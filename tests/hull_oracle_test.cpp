@@ -244,6 +244,38 @@ std::vector<ShapedCase> shaped_cases() {
     cases.push_back({"integer_circle_in_angle_order", points});
   }
   {
+    // Every point twice, in a scrambled order (stride 1031, coprime to the count): Chan's
+    // rounds up to m = 256 fail, and its last round merges rings holding duplicates.
+    std::vector<Vec2> points;
+    constexpr int kCount = 4096;
+    for (int k = 0; k < 2 * kCount; ++k) {
+      const int i = (k * 1031) % kCount;
+      const double angle = 2 * std::numbers::pi * i / kCount;
+      points.push_back(
+          {std::round(0x1p20 * std::cos(angle)), std::round(0x1p20 * std::sin(angle))});
+    }
+    cases.push_back({"integer_circle_scrambled_twice", points});
+  }
+  {
+    // A fan from the lowest point: a parabola's points and, on the ray to each, the points at
+    // half and a quarter of the way. Those on the first and last rays lie on hull edges, so
+    // the polar order's ties at both ends decide what survives.
+    std::vector<Vec2> points{{0, 0}};
+    for (int x = 1; x <= 400; ++x) {
+      const double far_x = (x * 617) % 400 + 1;  // scrambled
+      const Vec2 far(far_x, far_x * far_x);
+      points.insert(points.end(), {far / 2, far, far / 4});
+    }
+    cases.push_back({"parabola_fan_with_ray_ties", points});
+  }
+  {
+    // A parabola so flat that every polar key, and every difference of two, is subnormal:
+    // no key order can be scaled or trusted, so the exact comparisons order everything.
+    std::vector<Vec2> points;
+    for (int i = 40; i >= 0; --i) points.push_back({i + 0.0, std::ldexp(double(i) * i, -1060)});
+    cases.push_back({"subnormal_parabola", points});
+  }
+  {
     // Negative and positive zero, which compare equal.
     cases.push_back({"signed_zeros", {{-0.0, 0.0}, {0.0, -0.0}, {1, 0}, {0, 1}, {-0.0, 1}}});
   }

@@ -41,44 +41,71 @@ inline bool keys_indistinct(Real earlier, Real later) {
 // Larger inputs: sort by the pseudo-angle, then settle every run of keys too close for their
 // rounding errors to tell apart with the exact comparison. A pair the keys misorder differs
 // by less than the tolerance, and so does every key between them, so the pair shares a run.
+// The radix sort sees the keys as fixed-point numbers scaled to the range they span, so a
+// group crowded into a narrow cone still spreads over all buckets, and two passes do.
 // Fills scratch.sorted with the points other than the pivot; returns false when a key cannot
-// be trusted (a difference overflowed). Touches 32 bytes a point: fresh memory is slow to
-// fault in, so nothing is stored twice.
+// be trusted (a difference overflowed). Fresh memory is slow to fault in, so nothing is
+// stored twice.
 template <typename Precedes>
 bool sort_by_pseudo_angle(const Vec2& pivot, std::span<const Vec2> points, GrahamScratch& scratch,
                           Precedes precedes) {
-  std::vector<std::uint64_t>& order = scratch.order;  // high 32 key bits, then the index
-  order.clear();
+  std::vector<Real>& keys = scratch.keys;  // first by input position, later in sorted order
+  keys.resize(points.size());
   bool reliable = true;
+  Real lowest = std::numeric_limits<Real>::infinity();
+  Real highest = -lowest;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (points[i] == pivot) continue;
     const Real dx = points[i].x() - pivot.x();
     const Real dy = points[i].y() - pivot.y();
-    const Real key = dy / (dx + std::abs(dy));
-    reliable &= std::isfinite(key) && dx < 0x1p+1000 && std::abs(dy) < 0x1p+1000;
-    order.push_back((ordered_bits(key) & 0xffffffff00000000ULL) | i);
+    const Real key = dy / (dx + std::abs(dy));  // NaN for the pivot itself, skipped below
+    reliable &= dx < 0x1p+1000 && std::abs(dy) < 0x1p+1000;
+    keys[i] = key;
+    if (points[i] != pivot) {
+      reliable &= std::isfinite(key);
+      lowest = std::min(lowest, key);
+      highest = std::max(highest, key);
+    }
   }
   if (!reliable) return false;
-  const std::size_t n = order.size();
-  if (n >= 4096) {
-    radix_sort(
-        order, scratch.buffer, [](std::uint64_t item) { return item; }, 32);
-  } else {
-    std::sort(order.begin(), order.end());  // the low bits are indices: only ties see them
+
+  // Fixed-point digits: 16 bits in two 8-bit passes for small groups, 24 bits in two 12-bit
+  // passes up to 2^21 points, 32 bits in three passes beyond.
+  const std::size_t n = points.size();
+  const int key_bits = n < 4096 ? 16 : n < (std::size_t{1} << 21) ? 24 : 32;
+  const Real largest_digit = std::ldexp(1.0, key_bits) - 1;
+  // Monotone in the key: subtracting and scaling by a positive number never reverse an order.
+  // A span too narrow to scale (the quotient overflows) leaves one bucket: the exact passes
+  // below then do all the ordering.
+  Real scale = highest > lowest ? largest_digit / (highest - lowest) : 0;
+  if (!std::isfinite(scale)) scale = 0;
+  std::vector<std::uint64_t>& order = scratch.order;  // fixed-point key above bit 32, then index
+  order.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (points[i] == pivot) continue;
+    const Real scaled = std::min((keys[i] - lowest) * scale, largest_digit);
+    order.push_back((static_cast<std::uint64_t>(scaled) << 32) | i);
   }
+  const auto item_key = [](std::uint64_t item) { return item; };
+  if (key_bits == 16) {
+    radix_sort<8>(order, scratch.buffer, item_key, 32, 48);
+  } else if (key_bits == 24) {
+    radix_sort<12>(order, scratch.buffer, item_key, 32, 56);
+  } else {
+    radix_sort<11>(order, scratch.buffer, item_key, 32, 64);
+  }
+  const std::size_t others = order.size();
   std::vector<Vec2>& sorted = scratch.sorted;
-  std::vector<Real>& keys = scratch.keys;
-  sorted.resize(n);
-  keys.resize(n);
-  for (std::size_t j = 0; j < n; ++j) {
+  sorted.resize(others);
+  keys.resize(others);
+  for (std::size_t j = 0; j < others; ++j) {
     sorted[j] = points[order[j] & 0xffffffffULL];
     keys[j] = pseudo_angle(pivot, sorted[j]);
   }
-  // Items that share their high 32 key bits came out in input order: order each such run by
+  // Items that share their fixed-point key came out in input order: order each such run by
   // the full key. A sort, not insertion: near-collinear input makes one run of every point.
-  for (std::size_t begin = 0; begin < n;) {
+  for (std::size_t begin = 0; begin < others;) {
     std::size_t end = begin + 1;
-    while (end < n && (order[end] >> 32) == (order[begin] >> 32)) ++end;
+    while (end < others && (order[end] >> 32) == (order[begin] >> 32)) ++end;
     if (end - begin > 1 && !std::is_sorted(keys.begin() + static_cast<std::ptrdiff_t>(begin),
                                            keys.begin() + static_cast<std::ptrdiff_t>(end))) {
       std::vector<std::pair<Real, Vec2>>& run = scratch.keyed_run;
@@ -90,9 +117,9 @@ bool sort_by_pseudo_angle(const Vec2& pivot, std::span<const Vec2> points, Graha
     }
     begin = end;
   }
-  for (std::size_t begin = 0; begin < n;) {
+  for (std::size_t begin = 0; begin < others;) {
     std::size_t end = begin + 1;
-    while (end < n && keys_indistinct(keys[end - 1], keys[end])) ++end;
+    while (end < others && keys_indistinct(keys[end - 1], keys[end])) ++end;
     if (end - begin > 1) {
       std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(begin),
                 sorted.begin() + static_cast<std::ptrdiff_t>(end), precedes);

@@ -19,16 +19,16 @@ inline std::uint64_t ordered_bits(Real value) noexcept {
   return (bits >> 63) != 0 ? ~bits : bits | (std::uint64_t{1} << 63);
 }
 
-// Sorts `items` by bits [low_bit, 64) of key(item), 11 bits a pass; a pass in which every item
-// has the same digit is skipped. `buffer` is scratch storage.
-template <typename T, typename Key>
-void radix_sort(std::vector<T>& items, std::vector<T>& buffer, Key key, int low_bit = 0) {
-  constexpr int kDigitBits = 11;
+// Sorts `items` by bits [low_bit, high_bit) of key(item), kDigitBits bits a pass; a pass in
+// which every item has the same digit is skipped. `buffer` is scratch storage.
+template <int kDigitBits = 11, typename T, typename Key>
+void radix_sort(std::vector<T>& items, std::vector<T>& buffer, Key key, int low_bit = 0,
+                int high_bit = 64) {
   constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
   const std::size_t n = items.size();
   buffer.resize(n);
   std::array<std::size_t, kBuckets> count;
-  for (int shift = low_bit; shift < 64; shift += kDigitBits) {
+  for (int shift = low_bit; shift < high_bit; shift += kDigitBits) {
     count.fill(0);
     for (const T& item : items) ++count[(key(item) >> shift) & (kBuckets - 1)];
     if (std::find(count.begin(), count.end(), n) != count.end()) continue;

@@ -28,8 +28,9 @@ ChanGroups chan_groups(std::span<const Vec2> points, std::size_t group_size);
 /// Chan's rounds as the paper states them: round t uses m = min(2^(2^t), n) on the points still
 /// in the running (after a round that did not close, only its group hulls' vertices); its wrap
 /// closes when the hull has at most m vertices, since each wrap step adds one vertex. The
-/// last round is the one that closes (or has a single group). chan_hull additionally skips
-/// rounds that provably cannot close; the hull is the same.
+/// last round is the one that closes (or has a single group). chan_hull additionally groups
+/// points by angular sector rather than input order and skips rounds that provably cannot
+/// close; the hull is the same.
 struct ChanRound {
   unsigned t = 0;
   ChanGroups groups;
