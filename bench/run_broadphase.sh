@@ -6,28 +6,14 @@
 # Environment:
 #   MINK_BENCH_MAX_SIZE=N   largest number of boxes (default 100000)
 set -euo pipefail
-
-if [ $# -lt 1 ]; then
-  echo "usage: $0 BUILD_DIR [benchmark flags...]" >&2
-  exit 2
-fi
-build_dir=$1
-shift
-bench_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-binary=$build_dir/bin/mink_bench_broadphase
-csv=$bench_dir/results/broadphase.csv
-
-if [ ! -x "$binary" ]; then
-  echo "run_broadphase.sh: $binary not found; build the target mink_bench_broadphase first" >&2
-  exit 1
-fi
-mkdir -p "$bench_dir/results"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+bench_init broadphase "$@"
 
 args=(--csv="$csv")
 if [ -n "${MINK_BENCH_MAX_SIZE:-}" ]; then args+=(--max-size="$MINK_BENCH_MAX_SIZE"); fi
 
 started=$SECONDS
-"$binary" "${args[@]}" "$@"
+"$binary" "${args[@]}" "${bench_args[@]}"
 echo "Broadphase benchmark took $((SECONDS - started)) s"
 
 # Ours over Box2D per case and size, from this run's CSV.

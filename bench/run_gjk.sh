@@ -8,42 +8,16 @@
 #
 # Usage: bench/run_gjk.sh BUILD_DIR [Google Benchmark flags...]
 set -euo pipefail
-
-if [ $# -lt 1 ]; then
-  echo "usage: $0 BUILD_DIR [benchmark flags...]" >&2
-  exit 2
-fi
-build_dir=$1
-shift
-bench_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-binary=$build_dir/bin/mink_bench_gjk
-results_dir=$bench_dir/results
-csv=$results_dir/gjk.csv
-
-if [ ! -x "$binary" ]; then
-  echo "run_gjk.sh: $binary not found; build the target mink_bench_gjk first" >&2
-  exit 1
-fi
-mkdir -p "$results_dir"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+bench_init gjk "$@"
 
 raw=$(mktemp)
 trap 'rm -f "$raw"' EXIT
 started=$SECONDS
-"$binary" --benchmark_format=csv "$@" >"$raw"
+"$binary" --benchmark_format=csv "${bench_args[@]}" >"$raw"
 echo "GJK benchmark took $((SECONDS - started)) s"
 
-# Google Benchmark's CSV: name,iterations,real_time,cpu_time,time_unit,...; the medians are the
-# rows named "case/size/implementation/..._median".
-{
-  echo "case,size,implementation,median_ns"
-  awk -F, '$1 ~ /_median"?$/ {
-    name = $1; gsub(/"/, "", name)
-    split(name, part, "/")
-    unit = $5; gsub(/"/, "", unit)
-    scale = unit == "us" ? 1000 : (unit == "ms" ? 1e6 : 1)
-    printf "%s,%s,%s,%.1f\n", part[1], part[2], part[3], $4 * scale
-  }' "$raw"
-} >"$csv"
+gbench_medians "$raw" 4 1 >"$csv"
 echo "Wrote $csv"
 
 # The ratios the narrowphase must show, from this one run.

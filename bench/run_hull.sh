@@ -6,25 +6,10 @@
 #   MINK_BENCH_MAX_SIZE=N                largest n (default 10^7); 100000 makes a quick run
 #   MINK_BENCH_IMPLEMENTATIONS=a,b,...   only these implementations, e.g. chan,divide-conquer,cgal
 set -euo pipefail
-
-if [ $# -lt 1 ]; then
-  echo "usage: $0 BUILD_DIR [benchmark flags...]" >&2
-  exit 2
-fi
-build_dir=$1
-shift
-bench_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-binary=$build_dir/bin/mink_bench_hull
-results_dir=$bench_dir/results
-csv=$results_dir/hull.csv
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+bench_init hull "$@"
 png=$results_dir/hull.png
-
-if [ ! -x "$binary" ]; then
-  echo "run_hull.sh: $binary not found; build the target mink_bench_hull first" >&2
-  exit 1
-fi
 command -v gnuplot >/dev/null || { echo "run_hull.sh: gnuplot not found (apt install gnuplot-nox)" >&2; exit 1; }
-mkdir -p "$results_dir"
 
 args=(--csv="$csv")
 if [ -n "${MINK_BENCH_MAX_SIZE:-}" ]; then args+=(--max-size="$MINK_BENCH_MAX_SIZE"); fi
@@ -34,7 +19,7 @@ fi
 
 started=$SECONDS
 status=0
-"$binary" "${args[@]}" "$@" || status=$?
+"$binary" "${args[@]}" "${bench_args[@]}" || status=$?
 echo "Hull benchmark took $((SECONDS - started)) s"
 # Status 3: something was not measured or a hull was wrong (listed above); plot the rest anyway.
 if [ "$status" -ne 0 ] && [ "$status" -ne 3 ]; then exit "$status"; fi

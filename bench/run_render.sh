@@ -14,43 +14,18 @@
 #   encode_frame      one frame through ffmpeg, per encoder (30-frame clips, start and end
 #                     included)
 set -euo pipefail
-
-if [ $# -lt 1 ]; then
-  echo "usage: $0 BUILD_DIR [benchmark flags...]" >&2
-  exit 2
-fi
-build_dir=$1
-shift
-bench_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-binary=$build_dir/bin/mink_bench_render
-results_dir=$bench_dir/results
-csv=$results_dir/render.csv
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+bench_init render "$@"
 raw=$(mktemp /tmp/mink-render-bench-XXXXXX.csv)
 trap 'rm -f "$raw"' EXIT
 
-if [ ! -x "$binary" ]; then
-  echo "run_render.sh: $binary not found; build the target mink_bench_render first" >&2
-  exit 1
-fi
-mkdir -p "$results_dir"
-
 "$binary" --benchmark_repetitions="${MINK_BENCH_REPETITIONS:-5}" \
   --benchmark_report_aggregates_only=true \
-  --benchmark_out="$raw" --benchmark_out_format=csv "$@"
+  --benchmark_out="$raw" --benchmark_out_format=csv "${bench_args[@]}"
 
-# Google Benchmark's CSV: name,iterations,real_time,cpu_time,time_unit,...; names look like
-# "case/size/implementation[/iterations:N/manual_time]_median".
-awk -F, '
-  BEGIN { print "case,size,implementation,median_ns" }
-  /^"/ {
-    name = $1
-    gsub(/"/, "", name)
-    if (name !~ /_median$/) next
-    sub(/_median$/, "", name)
-    split(name, part, "/")
-    scale = ($5 == "ms") ? 1e6 : ($5 == "us") ? 1e3 : ($5 == "s") ? 1e9 : 1
-    printf "%s,%s,%s,%.0f\n", part[1], part[2], part[3], $3 * scale
-  }' "$raw" > "$csv"
+# Names look like "case/size/implementation[/iterations:N/manual_time]_median"; the real
+# time column holds the manual times.
+gbench_medians "$raw" 3 0 >"$csv"
 echo "Wrote $csv"
 
 # Ratios, and the 60 fps budget for draw + readback on OSMesa.
