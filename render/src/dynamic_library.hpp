@@ -19,7 +19,6 @@ class DynamicLibrary {
   Function function(const char* name) const {
     return reinterpret_cast<Function>(symbol(name));
   }
-  const std::string& name() const { return name_; }
 
  private:
   void* handle_ = nullptr;

@@ -28,7 +28,6 @@ namespace mink::detail {
   X(PFNGLDELETESHADERPROC, DeleteShader)                                     \
   X(PFNGLCREATEPROGRAMPROC, CreateProgram)                                   \
   X(PFNGLATTACHSHADERPROC, AttachShader)                                     \
-  X(PFNGLBINDATTRIBLOCATIONPROC, BindAttribLocation)                         \
   X(PFNGLLINKPROGRAMPROC, LinkProgram)                                       \
   X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                     \
   X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                           \
@@ -57,10 +56,8 @@ namespace mink::detail {
   X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, RenderbufferStorageMultisample) \
   X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)                       \
   X(PFNGLBLITFRAMEBUFFERPROC, BlitFramebuffer)                               \
-  X(PFNGLREADBUFFERPROC, ReadBuffer)                                         \
   X(PFNGLPIXELSTOREIPROC, PixelStorei)                                       \
-  X(PFNGLREADPIXELSPROC, ReadPixels)                                         \
-  X(PFNGLFINISHPROC, Finish)
+  X(PFNGLREADPIXELSPROC, ReadPixels)
 
 struct GlFunctions {
 #define MINK_GL_DECLARE(type, name) type name = nullptr;

@@ -1,6 +1,7 @@
 #include "mink/render/renderer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -8,6 +9,8 @@
 
 #include "gl_functions.hpp"
 #include "mink/error.hpp"
+#include "mink/geometry/hull_input.hpp"
+#include "mink/geometry/polygon.hpp"
 #include "mink/render/bitmap_font.hpp"
 #include "mink/render/render_error.hpp"
 
@@ -55,10 +58,6 @@ bool transparent(std::uint32_t rgba) {
 
 bool opaque(std::uint32_t rgba) {
   return (rgba >> 24) == 255;
-}
-
-void require_finite_point(const Vec2& p, std::size_t index) {
-  if (!p.allFinite()) throw NonFiniteInputError(index);
 }
 
 GLuint compile(const detail::GlFunctions& gl, GLenum type, const char* source, const char* name) {
@@ -320,14 +319,18 @@ void Renderer::quad(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d,
   triangle(a, c, d, rgba);
 }
 
+void Renderer::rect(const Vec2& top_left, const Vec2& bottom_right, std::uint32_t rgba) {
+  quad(top_left, Vec2(bottom_right.x(), top_left.y()), bottom_right,
+       Vec2(top_left.x(), bottom_right.y()), rgba);
+}
+
 void Renderer::thick_segment_pixels(const Vec2& a, const Vec2& b, Real width, std::uint32_t rgba) {
   const Real half = width / 2;
   const Vec2 along = b - a;
   const Real length = along.norm();
   if (length < 1e-9) {
     // A zero-length segment still shows, as a square dot.
-    quad(a + Vec2(-half, -half), a + Vec2(half, -half), a + Vec2(half, half), a + Vec2(-half, half),
-         rgba);
+    rect(a - Vec2(half, half), a + Vec2(half, half), rgba);
     return;
   }
   const Vec2 side = Vec2(-along.y(), along.x()) * (half / length);
@@ -373,7 +376,7 @@ void Renderer::text_pixels(const Vec2& top_left, std::string_view text, std::uin
         }
         const Real x0 = x + column * scale;
         const Real x1 = x + end * scale;
-        quad(Vec2(x0, y), Vec2(x1, y), Vec2(x1, y + scale), Vec2(x0, y + scale), rgba);
+        rect(Vec2(x0, y), Vec2(x1, y + scale), rgba);
         column = end;
       }
     }
@@ -392,11 +395,9 @@ void Renderer::draw_polygon(std::span<const Vec2> vertices, Color fill, Color ou
   }
   const std::uint32_t fill_rgba = pack(fill);
   const std::uint32_t outline_rgba = pack(outline);
+  require_finite(vertices);
   scratch_.clear();
-  for (std::size_t i = 0; i < vertices.size(); ++i) {
-    require_finite_point(vertices[i], i);
-    scratch_.push_back(camera_.world_to_pixel(vertices[i]));
-  }
+  for (const Vec2& vertex : vertices) scratch_.push_back(camera_.world_to_pixel(vertex));
   const std::span<const Vec2> pixels(scratch_);
   const std::size_t n = pixels.size();
   const bool show_fill = !transparent(fill_rgba);
@@ -407,22 +408,17 @@ void Renderer::draw_polygon(std::span<const Vec2> vertices, Color fill, Color ou
 
   // The outline is a band centred on the boundary with mitred corners, so corners close.
   // Normals point out of the polygon whichever way it winds on screen.
-  Real twice_area = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2& p = pixels[i];
-    const Vec2& q = pixels[(i + 1) % n];
-    twice_area += p.x() * q.y() - q.x() * p.y();
-  }
+  const Real twice_area = 2 * signed_area(pixels);
   const Real half = options_.line_width_pixels / 2;
-  const auto outward_normal = [&](std::size_t i) -> Vec2 {
+  bool degenerate = std::abs(twice_area) < 1e-9;
+  normals_.clear();
+  for (std::size_t i = 0; i < n && !degenerate; ++i) {
     const Vec2 edge = pixels[(i + 1) % n] - pixels[i];
     const Real length = edge.norm();
-    if (length < 1e-9) return Vec2::Zero();
+    degenerate = length < 1e-9;
     const Vec2 normal = Vec2(edge.y(), -edge.x()) / length;
-    return twice_area >= 0 ? normal : Vec2(-normal);
-  };
-  bool degenerate = std::abs(twice_area) < 1e-9;
-  for (std::size_t i = 0; i < n && !degenerate; ++i) degenerate = outward_normal(i).isZero();
+    normals_.push_back(twice_area >= 0 ? normal : Vec2(-normal));
+  }
   if (degenerate) {
     // Repeated vertices or no area on screen: plain segments say the same without mitres.
     if (show_fill) fan(pixels, fill_rgba);
@@ -434,8 +430,8 @@ void Renderer::draw_polygon(std::span<const Vec2> vertices, Color fill, Color ou
   }
   offsets_.clear();
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 before = outward_normal((i + n - 1) % n);
-    const Vec2 after = outward_normal(i);
+    const Vec2& before = normals_[(i + n - 1) % n];
+    const Vec2& after = normals_[i];
     // |miter| = half / cos(turn / 2); capped so a needle-sharp corner stays short.
     const Real denominator = std::max<Real>(1 + before.dot(after), 0.25);
     offsets_.push_back((before + after) * (half / denominator));
@@ -446,19 +442,16 @@ void Renderer::draw_polygon(std::span<const Vec2> vertices, Color fill, Color ou
     // fill over the polygon shrunk by as much covers the same pixels as fill plus band, with
     // 2 (n - 2) triangles instead of 3n - 2. Valid while the shrunk polygon keeps every
     // edge's direction; a polygon thinner than the line takes the band below.
+    shrunk_.clear();
+    for (std::size_t i = 0; i < n; ++i) shrunk_.push_back(pixels[i] - offsets_[i]);
     bool shrinks = true;
     for (std::size_t i = 0; i < n && shrinks; ++i) {
       const std::size_t j = (i + 1) % n;
-      shrinks =
-          ((pixels[j] - offsets_[j]) - (pixels[i] - offsets_[i])).dot(pixels[j] - pixels[i]) > 0;
+      shrinks = (shrunk_[j] - shrunk_[i]).dot(pixels[j] - pixels[i]) > 0;
     }
     if (shrinks) {
       grown_.clear();
-      shrunk_.clear();
-      for (std::size_t i = 0; i < n; ++i) {
-        grown_.push_back(pixels[i] + offsets_[i]);
-        shrunk_.push_back(pixels[i] - offsets_[i]);
-      }
+      for (std::size_t i = 0; i < n; ++i) grown_.push_back(pixels[i] + offsets_[i]);
       fan(grown_, outline_rgba);
       fan(shrunk_, fill_rgba);
       return;
@@ -474,15 +467,14 @@ void Renderer::draw_polygon(std::span<const Vec2> vertices, Color fill, Color ou
 
 void Renderer::draw_segment(const Vec2& a, const Vec2& b, Color color) {
   const std::uint32_t rgba = pack(color);
-  require_finite_point(a, 0);
-  require_finite_point(b, 1);
+  require_finite(std::array{a, b});
   thick_segment_pixels(camera_.world_to_pixel(a), camera_.world_to_pixel(b),
                        options_.line_width_pixels, rgba);
 }
 
 void Renderer::draw_point(const Vec2& position, float pixels, Color color) {
   const std::uint32_t rgba = pack(color);
-  require_finite_point(position, 0);
+  require_finite({&position, 1});
   if (!(pixels >= 0) || !std::isfinite(pixels)) {
     throw InvalidArgumentError("point size " + std::to_string(pixels) +
                                " must be finite and not negative");
@@ -492,7 +484,7 @@ void Renderer::draw_point(const Vec2& position, float pixels, Color color) {
 
 void Renderer::draw_circle(const Vec2& center, Real radius, Color color) {
   const std::uint32_t rgba = pack(color);
-  require_finite_point(center, 0);
+  require_finite({&center, 1});
   if (!(radius >= 0) || !std::isfinite(radius)) {
     throw InvalidArgumentError("circle radius " + std::to_string(radius) +
                                " must be finite and not negative");
@@ -514,7 +506,7 @@ void Renderer::draw_circle(const Vec2& center, Real radius, Color color) {
 
 void Renderer::draw_text(const Vec2& position, std::string_view text, Color color) {
   const std::uint32_t rgba = pack(color);
-  require_finite_point(position, 0);
+  require_finite({&position, 1});
   BitmapFont::text_width(text);  // validates every character before anything is recorded
   // The label starts at the anchor, its first line centred on it vertically.
   const Vec2 anchor = camera_.world_to_pixel(position);
@@ -523,7 +515,7 @@ void Renderer::draw_text(const Vec2& position, std::string_view text, Color colo
 
 void Renderer::draw_screen_text(const Vec2& pixel, std::string_view text, Color color) {
   const std::uint32_t rgba = pack(color);
-  require_finite_point(pixel, 0);
+  require_finite({&pixel, 1});
   BitmapFont::text_width(text);
   text_pixels(pixel, text, rgba);
 }
@@ -540,10 +532,8 @@ void Renderer::draw_overlay(std::string_view text, Color color, Color backing) {
 
 void Renderer::draw_screen_rect(const Vec2& top_left, const Vec2& bottom_right, Color color) {
   const std::uint32_t rgba = pack(color);
-  require_finite_point(top_left, 0);
-  require_finite_point(bottom_right, 1);
-  quad(top_left, Vec2(bottom_right.x(), top_left.y()), bottom_right,
-       Vec2(top_left.x(), bottom_right.y()), rgba);
+  require_finite(std::array{top_left, bottom_right});
+  rect(top_left, bottom_right, rgba);
 }
 
 }  // namespace mink

@@ -214,15 +214,9 @@ void VideoWriter::write_bytes(const std::uint8_t* data, std::size_t size) {
   }
   pthread_sigmask(SIG_SETMASK, &previous, nullptr);
   if (error != 0) {
-    ::close(pipe_fd_);
-    pipe_fd_ = -1;
-    bool succeeded = false;
-    const std::string how = wait_for(pid_, succeeded);
-    pid_ = -1;
-    const std::string tail = log_tail();
-    std::filesystem::remove(log_path_);
-    throw OutputError("ffmpeg stopped taking frames for " + path_.string() + " (" + how +
-                      "): " + tail);
+    const Ending ending = end_ffmpeg();
+    throw OutputError("ffmpeg stopped taking frames for " + path_.string() + " (" + ending.how +
+                      "): " + ending.tail);
   }
 }
 
@@ -250,17 +244,24 @@ void VideoWriter::write_frame(const Image& frame) {
   ++frames_;
 }
 
-void VideoWriter::close() {
-  if (pid_ < 0) return;
+// Closes ffmpeg's input, waits for it to exit and removes its log.
+VideoWriter::Ending VideoWriter::end_ffmpeg() {
   ::close(pipe_fd_);
   pipe_fd_ = -1;
-  bool succeeded = false;
-  const std::string how = wait_for(pid_, succeeded);
+  Ending ending;
+  ending.how = wait_for(pid_, ending.succeeded);
   pid_ = -1;
-  const std::string tail = succeeded ? std::string() : log_tail();
+  ending.tail = log_tail();
   std::filesystem::remove(log_path_);
-  if (!succeeded) {
-    throw OutputError("ffmpeg failed to write " + path_.string() + " (" + how + "): " + tail);
+  return ending;
+}
+
+void VideoWriter::close() {
+  if (pid_ < 0) return;
+  const Ending ending = end_ffmpeg();
+  if (!ending.succeeded) {
+    throw OutputError("ffmpeg failed to write " + path_.string() + " (" + ending.how +
+                      "): " + ending.tail);
   }
 }
 

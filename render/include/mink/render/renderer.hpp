@@ -108,6 +108,7 @@ class Renderer final : public DebugDraw {
   void triangle(const Vec2& a, const Vec2& b, const Vec2& c, std::uint32_t rgba);
   void fan(std::span<const Vec2> ring, std::uint32_t rgba);
   void quad(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d, std::uint32_t rgba);
+  void rect(const Vec2& top_left, const Vec2& bottom_right, std::uint32_t rgba);
   void thick_segment_pixels(const Vec2& a, const Vec2& b, Real width, std::uint32_t rgba);
   void disc_pixels(const Vec2& center, Real radius, std::uint32_t rgba);
   void text_pixels(const Vec2& top_left, std::string_view text, std::uint32_t rgba);
@@ -130,6 +131,7 @@ class Renderer final : public DebugDraw {
   };
   std::vector<Run> runs_;
   std::vector<Vec2> scratch_;  ///< per-polygon work space, kept to avoid allocations
+  std::vector<Vec2> normals_;  ///< outward unit normal of each edge
   std::vector<Vec2> offsets_;
   std::vector<Vec2> grown_;
   std::vector<Vec2> shrunk_;

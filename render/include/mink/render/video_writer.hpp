@@ -47,6 +47,12 @@ class VideoWriter {
  private:
   void write_bytes(const std::uint8_t* data, std::size_t size);
   std::string log_tail() const;
+  struct Ending {
+    bool succeeded = false;
+    std::string how;   ///< exit status or signal, as wait_for words it
+    std::string tail;  ///< the end of ffmpeg's log
+  };
+  Ending end_ffmpeg();
 
   std::filesystem::path path_;
   std::filesystem::path log_path_;
