@@ -10,6 +10,7 @@
 
 #include "mink/geometry/graham.hpp"
 #include "mink/geometry/hull_input.hpp"
+#include "polar_order.hpp"
 #include "wrap_order.hpp"
 
 namespace mink {
@@ -27,11 +28,14 @@ struct GroupHulls {
   std::vector<Vec2> vertices;
   std::vector<std::size_t> offsets;
   std::vector<Box> boxes;
+  std::size_t lowest_group = 0;  // the ring holding the lowest (x, y) vertex of all
 
   std::size_t count() const { return offsets.size() - 1; }
   std::span<const Vec2> ring(std::size_t g) const {
     return std::span<const Vec2>(vertices).subspan(offsets[g], offsets[g + 1] - offsets[g]);
   }
+  // Each ring starts at its lowest vertex, so the lowest of all starts its ring.
+  const Vec2& lowest() const { return vertices[offsets[lowest_group]]; }
 };
 
 // Index of the vertex of `ring` the wrap from p goes to: every vertex on its left or on its
@@ -213,12 +217,11 @@ std::vector<Vec2> certified_vertices(std::span<const Vec2> points) {
 // rules out most groups by their boxes alone, and the last round's rings barely interleave.
 // One counting-sort pass on a coarse pseudo-angle; rounding only moves a point to a
 // neighbouring sector, which leaves the partition valid.
-void order_by_sector(std::span<const Vec2> points, const Vec2& centre,
-                     std::vector<std::uint16_t>& sectors, std::vector<Vec2>& ordered) {
+std::vector<Vec2> order_by_sector(std::span<const Vec2> points, const Vec2& centre) {
   constexpr std::size_t kSectors = 2048;
   constexpr Real kSectorsPerUnit = kSectors / 4.0;  // the pseudo-angle below spans [0, 4)
   std::array<std::size_t, kSectors> start{};
-  sectors.resize(points.size());
+  std::vector<std::uint16_t> sectors(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Real dx = points[i].x() - centre.x();
     const Real dy = points[i].y() - centre.y();
@@ -233,8 +236,9 @@ void order_by_sector(std::span<const Vec2> points, const Vec2& centre,
   }
   std::size_t sum = 0;
   for (std::size_t& s : start) sum += std::exchange(s, sum);
-  ordered.resize(points.size());
+  std::vector<Vec2> ordered(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) ordered[start[sectors[i]]++] = points[i];
+  return ordered;
 }
 
 // The last round's single group is the union of the previous round's rings. Its Graham scan
@@ -245,28 +249,14 @@ void order_by_sector(std::span<const Vec2> points, const Vec2& centre,
 // overflowed), leaving the caller to sort.
 bool graham_scan_of_rings(const GroupHulls& rings, std::vector<Vec2>& hull) {
   const std::size_t ring_count = rings.count();
-  Vec2 pivot = rings.ring(0)[0];
-  for (std::size_t g = 1; g < ring_count; ++g) {
-    if (lex_less(rings.ring(g)[0], pivot)) pivot = rings.ring(g)[0];
-  }
+  const Vec2 pivot = rings.lowest();
   bool reliable = true;
-  // The pseudo-angle graham.cpp sorts by; NaN at the pivot, which is never compared.
   const auto key_of = [&](const Vec2& p) {
-    const Real dx = p.x() - pivot.x();
-    const Real dy = p.y() - pivot.y();
-    reliable &= dx < 0x1p+1000 && std::abs(dy) < 0x1p+1000;
-    return dy / (dx + std::abs(dy));
+    reliable &= detail::pseudo_angle_reliable(pivot, p);
+    return detail::pseudo_angle(pivot, p);
   };
-  // Polar order about the pivot, nearer first on a ray: the keys decide where their rounding
-  // cannot have reversed them, the exact orientation elsewhere.
   const auto precedes = [&](const Vec2& a, Real key_a, const Vec2& b, Real key_b) {
-    const Real difference = key_b - key_a;
-    constexpr Real kTolerance = 2.5e-15;  // above graham.cpp's bound for keys in [-1, 1]
-    if (difference > kTolerance) return true;
-    if (difference < -kTolerance) return false;
-    const int turn = orient2d(pivot, a, b);
-    if (turn != 0) return turn > 0;
-    return lex_less(a, b);
+    return detail::polar_precedes(pivot, a, key_a, b, key_b);
   };
 
   // An arc: up to two contiguous pieces of a ring (it may wrap past the ring's end), read
@@ -373,14 +363,6 @@ bool graham_scan_of_rings(const GroupHulls& rings, std::vector<Vec2>& hull) {
   return reliable;
 }
 
-// m = min(2^(2^t), limit) without overflowing.
-std::size_t group_size(unsigned t, std::size_t limit) {
-  if (t >= 6) return limit;
-  const unsigned exponent = 1u << t;
-  if (exponent >= 63) return limit;
-  return std::min<std::size_t>(std::size_t{1} << exponent, limit);
-}
-
 // Round t's groups: each run of m candidates, hulled by Graham's scan, with its box.
 void build_group_hulls(std::span<const Vec2> candidates, std::size_t m,
                        detail::GrahamScratch& scratch, GroupHulls& groups) {
@@ -388,11 +370,15 @@ void build_group_hulls(std::span<const Vec2> candidates, std::size_t m,
   groups.vertices.reserve(candidates.size());  // never more hull vertices than points
   groups.offsets.assign(1, 0);
   groups.boxes.clear();
+  groups.lowest_group = 0;
   for (std::size_t begin = 0; begin < candidates.size(); begin += m) {
     const std::size_t first_vertex = groups.vertices.size();
     detail::graham_scan(candidates.subspan(begin, std::min(m, candidates.size() - begin)), scratch,
                         groups.vertices);
     groups.offsets.push_back(groups.vertices.size());
+    if (lex_less(groups.vertices[first_vertex], groups.lowest())) {
+      groups.lowest_group = groups.count() - 1;
+    }
     Box box{groups.vertices[first_vertex].x(), groups.vertices[first_vertex].y(),
             groups.vertices[first_vertex].x(), groups.vertices[first_vertex].y()};
     for (std::size_t i = first_vertex + 1; i < groups.vertices.size(); ++i) {
@@ -420,16 +406,12 @@ bool strictly_left_of(const Box& box, const Vec2& from, const Vec2& to) {
 bool wrap_group_hulls(const GroupHulls& groups, std::size_t m, std::vector<std::size_t>& tangent,
                       std::vector<Vec2>& hull) {
   const std::size_t group_count = groups.count();
-  std::size_t start_group = 0;
-  for (std::size_t g = 1; g < group_count; ++g) {
-    if (lex_less(groups.ring(g)[0], groups.ring(start_group)[0])) start_group = g;
-  }
-  const Vec2 start = groups.ring(start_group)[0];
+  const Vec2 start = groups.lowest();
   // Each ring starts at its lowest (x, y) vertex, so a ring holding the start holds it at 0.
   tangent.assign(group_count, 0);
   hull.assign(1, start);
   Vec2 current = start;
-  std::size_t current_group = start_group;
+  std::size_t current_group = groups.lowest_group;
   const Vec2* vertices = groups.vertices.data();
   const std::size_t* offsets = groups.offsets.data();
   for (std::size_t step = 0; step < m; ++step) {
@@ -471,6 +453,13 @@ bool wrap_group_hulls(const GroupHulls& groups, std::size_t m, std::vector<std::
 
 }  // namespace
 
+namespace detail {
+std::size_t chan_group_size(unsigned t, std::size_t limit) noexcept {
+  if (t >= 6) return limit;  // 2^(2^6) exceeds any count
+  return std::min<std::size_t>(std::size_t{1} << (1u << t), limit);
+}
+}  // namespace detail
+
 ConvexHull chan_hull(std::span<const Vec2> points) {
   validate_hull_input(points);
   const std::vector<Vec2> extremes = certified_vertices(points);
@@ -482,45 +471,42 @@ ConvexHull chan_hull(std::span<const Vec2> points) {
     centre = Vec2::Zero();
     for (const Vec2& v : extremes) centre += v / static_cast<Real>(known_vertices);
   }
-  // Points still in the running: after a round, only vertices of its group hulls, since a
-  // point inside any group hull is inside the final one.
-  std::vector<Vec2> candidates;
-  {
-    std::vector<std::uint16_t> sectors;
-    order_by_sector(points, centre, sectors, candidates);
-  }
+  std::vector<Vec2> ordered = order_by_sector(points, centre);
   detail::GrahamScratch scratch;
-  GroupHulls groups;
+  // The group hulls of the last round that did not close: their vertices are the points still
+  // in the running, since a point inside any group hull is inside the final one.
+  GroupHulls rings;
+  GroupHulls next;  // the round being built
   std::vector<std::size_t> tangent;
   std::vector<Vec2> hull;
-  bool have_rings = false;  // `groups` holds the previous round's rings over `candidates`
 
   for (unsigned t = 1;; ++t) {
+    const std::span<const Vec2> candidates = rings.offsets.empty()
+                                                 ? std::span<const Vec2>(ordered)
+                                                 : std::span<const Vec2>(rings.vertices);
     const std::size_t count = candidates.size();
-    const std::size_t m = group_size(t, count);
+    const std::size_t m = detail::chan_group_size(t, count);
     if (m < known_vertices && m < count) continue;
     if (m >= count) {
-      // One group: its Graham hull is the hull, and the wrap would only walk it again.
+      // One group: its Graham hull is the hull, and the wrap would only walk it again. The
+      // hull goes into memory an earlier round has already touched.
+      hull.swap(next.vertices);
       hull.clear();
-      if (have_rings && groups.count() > 1) {
-        // The rings' vertices are the candidates; the round's other buffer, already in memory
-        // and as large, takes the hull.
-        groups.vertices.swap(candidates);
-        hull.swap(candidates);
-        hull.clear();
-        if (graham_scan_of_rings(groups, hull)) return detail::hull_from_ccw_ring(std::move(hull));
-        groups.vertices.swap(candidates);
-        hull.clear();
+      if (!rings.offsets.empty() && graham_scan_of_rings(rings, hull)) {
+        return detail::hull_from_ccw_ring(std::move(hull));
       }
+      hull.clear();
       detail::graham_scan(candidates, scratch, hull);
       return detail::hull_from_ccw_ring(std::move(hull));
     }
-    build_group_hulls(candidates, m, scratch, groups);
-    if (wrap_group_hulls(groups, m, tangent, hull)) {
+    build_group_hulls(candidates, m, scratch, next);
+    if (wrap_group_hulls(next, m, tangent, hull)) {
       return detail::hull_from_ccw_ring(std::move(hull));
     }
-    candidates.swap(groups.vertices);
-    have_rings = true;
+    std::swap(rings, next);
+    // The next round writes over the older rings, or after the first round over the
+    // sector-ordered copy, which nothing reads any more.
+    if (!ordered.empty()) next.vertices.swap(ordered);
   }
 }
 

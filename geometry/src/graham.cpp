@@ -11,6 +11,7 @@
 
 #include "mink/geometry/hull_input.hpp"
 #include "mink/geometry/orientation.hpp"
+#include "polar_order.hpp"
 #include "radix_sort.hpp"
 
 namespace mink {
@@ -20,23 +21,6 @@ namespace detail {
 namespace {
 
 constexpr std::size_t kSmall = 16;
-
-// A pseudo-angle of p seen from the pivot: strictly increasing with the true angle on
-// (-90, 90] degrees, computed with relative error below 6 ulps (plus 2^-1000 absolute, for
-// underflow) while the differences stay finite.
-inline Real pseudo_angle(const Vec2& pivot, const Vec2& p) {
-  const Real dx = p.x() - pivot.x();
-  const Real dy = p.y() - pivot.y();
-  return dy / (dx + std::abs(dy));
-}
-
-// Could rounding have put these two keys (in this order) the wrong way round?
-inline bool keys_indistinct(Real earlier, Real later) {
-  constexpr Real kRelativeTolerance = 1e-15;
-  constexpr Real kAbsoluteTolerance = 0x1p-1000;
-  return later - earlier <=
-         kRelativeTolerance * (std::abs(later) + std::abs(earlier)) + kAbsoluteTolerance;
-}
 
 // Larger inputs: sort by the pseudo-angle, then settle every run of keys too close for their
 // rounding errors to tell apart with the exact comparison. A pair the keys misorder differs
@@ -55,10 +39,8 @@ bool sort_by_pseudo_angle(const Vec2& pivot, std::span<const Vec2> points, Graha
   Real lowest = std::numeric_limits<Real>::infinity();
   Real highest = -lowest;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const Real dx = points[i].x() - pivot.x();
-    const Real dy = points[i].y() - pivot.y();
-    const Real key = dy / (dx + std::abs(dy));  // NaN for the pivot itself, skipped below
-    reliable &= dx < 0x1p+1000 && std::abs(dy) < 0x1p+1000;
+    const Real key = pseudo_angle(pivot, points[i]);  // NaN for the pivot, skipped below
+    reliable &= pseudo_angle_reliable(pivot, points[i]);
     keys[i] = key;
     if (points[i] != pivot) {
       reliable &= std::isfinite(key);
@@ -134,13 +116,8 @@ bool sort_by_pseudo_angle(const Vec2& pivot, std::span<const Vec2> points, Graha
 void graham_scan(std::span<const Vec2> points, GrahamScratch& scratch, std::vector<Vec2>& ring) {
   if (points.empty()) return;
   const Vec2 pivot = *std::min_element(points.begin(), points.end(), lex_less);
-  // Every other point lies right of or straight above the pivot, a range of directions
-  // narrower than a half-turn, so orientation is a strict weak order on them. Points on one
-  // ray from the pivot go nearest first; along such a ray (x, y) order is distance order.
   const auto precedes = [&pivot](const Vec2& a, const Vec2& b) {
-    const int turn = orient2d(pivot, a, b);
-    if (turn != 0) return turn > 0;
-    return lex_less(a, b);
+    return polar_precedes(pivot, a, b);
   };
 
   if (points.size() <= kSmall) {
@@ -153,8 +130,7 @@ void graham_scan(std::span<const Vec2> points, GrahamScratch& scratch, std::vect
     for (const Vec2& p : points) {
       if (p == pivot) continue;
       const Real key = pseudo_angle(pivot, p);
-      reliable &= std::isfinite(key) && p.x() - pivot.x() < 0x1p+1000 &&
-                  std::abs(p.y() - pivot.y()) < 0x1p+1000;
+      reliable &= std::isfinite(key) && pseudo_angle_reliable(pivot, p);
       std::size_t j = count++;
       for (; j > 0 && keys[j - 1] > key; --j) {
         keys[j] = keys[j - 1];

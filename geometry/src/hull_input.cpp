@@ -1,5 +1,6 @@
 #include "mink/geometry/hull_input.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "mink/error.hpp"
@@ -21,15 +22,11 @@ void validate_hull_input(std::span<const Vec2> points) {
     throw DegenerateInputError("a hull needs at least 3 points, got " +
                                std::to_string(points.size()));
   }
-  const Vec2& first = points[0];
-  std::size_t other = 1;
-  while (other < points.size() && points[other] == first) ++other;
-  if (other == points.size()) {
+  if (!all_on_one_line(points)) return;
+  const auto same_as_first = [&](const Vec2& p) { return p == points[0]; };
+  if (std::all_of(points.begin(), points.end(), same_as_first)) {
     throw DegenerateInputError("all " + std::to_string(points.size()) +
                                " points are the same point");
-  }
-  for (std::size_t i = other + 1; i < points.size(); ++i) {
-    if (orient2d(first, points[other], points[i]) != 0) return;
   }
   throw DegenerateInputError("all " + std::to_string(points.size()) + " points lie on one line");
 }

@@ -35,9 +35,7 @@ ChanTrace chan_trace(std::span<const Vec2> points) {
   std::vector<Vec2> candidates(points.begin(), points.end());
   for (unsigned t = 1;; ++t) {
     const std::size_t count = candidates.size();
-    // m = min(2^(2^t), count); 2^(2^t) exceeds any count once t reaches 6.
-    const std::size_t m =
-        t >= 6 ? count : std::min<std::size_t>(std::size_t{1} << (1u << t), count);
+    const std::size_t m = detail::chan_group_size(t, count);
     ChanRound round{t, chan_groups(candidates, m), false};
     round.closed = round.groups.hulls.size() == 1 || hull.size() <= m;
     const bool last = round.closed;

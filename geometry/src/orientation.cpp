@@ -255,3 +255,17 @@ int orient2d_big_integer(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
 }
 
 }  // namespace mink::detail
+
+namespace mink {
+
+bool all_on_one_line(std::span<const Vec2> points) noexcept {
+  if (points.empty()) return true;
+  std::size_t second = 1;
+  while (second < points.size() && points[second] == points[0]) ++second;
+  for (std::size_t i = second + 1; i < points.size(); ++i) {
+    if (orient2d(points[0], points[second], points[i]) != 0) return false;
+  }
+  return true;
+}
+
+}  // namespace mink

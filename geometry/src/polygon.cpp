@@ -19,20 +19,6 @@ Real signed_area(std::span<const Vec2> polygon) {
   return twice_area / 2;
 }
 
-namespace {
-
-bool all_on_one_line(std::span<const Vec2> polygon) {
-  std::size_t second = 1;
-  while (second < polygon.size() && polygon[second] == polygon[0]) ++second;
-  if (second == polygon.size()) return true;
-  for (std::size_t i = second + 1; i < polygon.size(); ++i) {
-    if (orient2d(polygon[0], polygon[second], polygon[i]) != 0) return false;
-  }
-  return true;
-}
-
-}  // namespace
-
 AreaProperties area_properties(std::span<const Vec2> polygon) {
   if (polygon.size() < 3) {
     throw DegenerateInputError("a polygon needs at least 3 vertices, got " +

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <span>
 
 #include "mink/geometry/convex_hull.hpp"
@@ -17,5 +18,10 @@ namespace mink {
 /// Graham's scan over the previous round's rings, whose arcs are merged into polar order
 /// instead of sorted again.
 ConvexHull chan_hull(std::span<const Vec2> points);
+
+namespace detail {
+/// Round t's group size, m = min(2^(2^t), limit), without overflowing.
+std::size_t chan_group_size(unsigned t, std::size_t limit) noexcept;
+}  // namespace detail
 
 }  // namespace mink

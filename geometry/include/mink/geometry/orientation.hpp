@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cmath>
+#include <span>
 
 #include "mink/geometry/types.hpp"
 
@@ -43,6 +44,10 @@ inline int orient2d(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
 inline Real orient2d_naive(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
 }
+
+/// Whether the points lie on one line, decided exactly; true for fewer than three distinct
+/// points.
+bool all_on_one_line(std::span<const Vec2> points) noexcept;
 
 /// Lexicographic order on (x, y), the order every hull in Minkowski starts from.
 inline bool lex_less(const Vec2& p, const Vec2& q) noexcept {
