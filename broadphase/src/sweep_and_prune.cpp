@@ -46,6 +46,11 @@ Real below(Real x) {
   return std::nextafter(x, -std::numeric_limits<Real>::infinity());
 }
 
+// The order of the entry array, and the same test against a bare key for searching it.
+// Lambdas rather than functions so that the algorithms inline them.
+constexpr auto by_key = [](const auto& x, const auto& y) { return x.key < y.key; };
+constexpr auto key_below = [](const auto& entry, std::uint64_t key) { return entry.key < key; };
+
 }  // namespace
 
 SweepAndPrune::SweepAndPrune(Real margin) : store_(margin) {}
@@ -110,7 +115,7 @@ SweepAndPrune::Entry SweepAndPrune::make_entry(ProxyId id, const Aabb& box) cons
   Entry entry = oriented(box);
   entry.key = make_key(band_of(entry.lo1), sweep_key(entry.lo0));
   entry.id = id;
-  entry.is_static = id == null_proxy ? 0 : static_cast<std::uint32_t>(store_.is_static(id));
+  entry.is_static = static_cast<std::uint32_t>(store_.is_static(id));
   return entry;
 }
 
@@ -122,8 +127,8 @@ bool SweepAndPrune::overlap(const Entry& x, const Entry& y) {
   return x.lo0 <= y.hi0 && y.lo0 <= x.hi0 && x.lo1 <= y.hi1 && y.lo1 <= x.hi1;
 }
 
-template <typename Visit>
-void SweepAndPrune::sweep(const Entry& q, Visit&& visit) const {
+template <typename Visit, typename StartInBand>
+void SweepAndPrune::sweep_bands(const Entry& q, Visit&& visit, StartInBand&& start_in_band) const {
   if (!entries_.empty()) {
     // An entry overlapping q starts at most one largest extent before q on each axis.
     const Real reach0 = max_extent0_ * (1 + kReachSlack);
@@ -132,12 +137,10 @@ void SweepAndPrune::sweep(const Entry& q, Visit&& visit) const {
     const std::uint32_t last_band = band_of(q.hi1);
     const std::uint32_t low = sweep_key(below(q.lo0 - reach0));
     const std::uint32_t high = sweep_key(q.hi0);
-    const auto by_key = [](const Entry& e, std::uint64_t key) { return e.key < key; };
     const Entry* const entries = entries_.data();
     for (std::uint32_t band = first_band; band <= last_band; ++band) {
       const Entry* const band_end = entries + band_begin_[band + 1];
-      const Entry* it =
-          std::lower_bound(entries + band_begin_[band], band_end, make_key(band, low), by_key);
+      const Entry* it = start_in_band(band, band_end, make_key(band, low));
       const std::uint64_t stop = make_key(band, high);
       for (; it != band_end && it->key <= stop; ++it) {
         if (overlap(*it, q)) visit(*it);
@@ -149,52 +152,44 @@ void SweepAndPrune::sweep(const Entry& q, Visit&& visit) const {
   }
 }
 
+template <typename Visit>
+void SweepAndPrune::sweep(const Entry& q, Visit&& visit) const {
+  sweep_bands(q, visit, [&](std::uint32_t band, const Entry* band_end, std::uint64_t start) {
+    return std::lower_bound(entries_.data() + band_begin_[band], band_end, start, key_below);
+  });
+}
+
 // The first entry in [first, last) with a key not below `key`, when none before `first` is:
 // a doubling search from `first`, cheap when the answer is near.
 const SweepAndPrune::Entry* SweepAndPrune::gallop(const Entry* first, const Entry* last,
                                                   std::uint64_t key) {
-  const auto by_key = [](const Entry& e, std::uint64_t k) { return e.key < k; };
   std::ptrdiff_t step = 1;
   while (first != last && first->key < key) {
-    if (last - first <= step) return std::lower_bound(first + 1, last, key, by_key);
+    if (last - first <= step) return std::lower_bound(first + 1, last, key, key_below);
     const Entry* const probe = first + step;
-    if (probe->key >= key) return std::lower_bound(first + 1, probe, key, by_key);
+    if (probe->key >= key) return std::lower_bound(first + 1, probe, key, key_below);
     first = probe + 1;
     step *= 2;
   }
   return first;
 }
 
-// sweep() over the banded entries for queries that come in array order: each band keeps
-// where the previous query's search ended and searches onward from there. A query whose
-// search bound lies below the kept one (rounding can reorder equal keys) starts afresh.
+// sweep() for queries that come in array order: each band keeps where the previous query's
+// search ended and searches onward from there. A query whose search bound lies below the kept
+// one (rounding can reorder equal keys) starts afresh.
 template <typename Visit>
 void SweepAndPrune::resume_sweep(const Entry& q, Visit&& visit) {
-  const Real reach0 = max_extent0_ * (1 + kReachSlack);
-  const Real reach1 = max_extent1_ * (1 + kReachSlack);
-  const std::uint32_t first_band = band_of(below(q.lo1 - reach1));
-  const std::uint32_t last_band = band_of(q.hi1);
-  const std::uint32_t low = sweep_key(below(q.lo0 - reach0));
-  const std::uint32_t high = sweep_key(q.hi0);
-  const Entry* const entries = entries_.data();
-  for (std::uint32_t band = first_band; band <= last_band; ++band) {
-    const Entry* const band_end = entries + band_begin_[band + 1];
-    const std::uint64_t start = make_key(band, low);
+  sweep_bands(q, visit, [&](std::uint32_t band, const Entry* band_end, std::uint64_t start) {
+    const Entry* const entries = entries_.data();
     Cursor& cursor = cursors_[band];
     if (cursor.stamp != cursor_stamp_ || start < cursor.key) {
       cursor = {cursor_stamp_, start, band_begin_[band]};
     }
-    const Entry* it = gallop(entries + cursor.index, band_end, start);
+    const Entry* const it = gallop(entries + cursor.index, band_end, start);
     cursor.key = start;
     cursor.index = static_cast<std::uint32_t>(it - entries);
-    const std::uint64_t stop = make_key(band, high);
-    for (; it != band_end && it->key <= stop; ++it) {
-      if (overlap(*it, q)) visit(*it);
-    }
-  }
-  for (const Entry& e : oversized_) {
-    if (overlap(e, q)) visit(e);
-  }
+    return it;
+  });
 }
 
 void SweepAndPrune::find_band_starts() {
@@ -210,8 +205,7 @@ void SweepAndPrune::find_band_starts() {
   } else {
     for (std::uint32_t band = 0; band < band_count_; ++band) {
       band_begin_[band] = static_cast<std::uint32_t>(
-          std::lower_bound(entries_.begin(), entries_.end(), make_key(band, 0),
-                           [](const Entry& e, std::uint64_t key) { return e.key < key; }) -
+          std::lower_bound(entries_.begin(), entries_.end(), make_key(band, 0), key_below) -
           entries_.begin());
     }
   }
@@ -449,7 +443,6 @@ void SweepAndPrune::sort_changed() {
     entries_.resize(kept);
     for (std::size_t i = 1; i < kept && shifts <= budget; ++i) sink(i, shifts);
     if (shifts <= budget && !appended_.empty()) {
-      const auto by_key = [](const Entry& x, const Entry& y) { return x.key < y.key; };
       std::sort(appended_.begin(), appended_.end(), by_key);
       entries_.insert(entries_.end(), appended_.begin(), appended_.end());
       std::inplace_merge(entries_.begin(), entries_.begin() + static_cast<std::ptrdiff_t>(kept),
@@ -464,8 +457,7 @@ void SweepAndPrune::sort_changed() {
       return;
     }
   }
-  std::sort(entries_.begin(), entries_.end(),
-            [](const Entry& x, const Entry& y) { return x.key < y.key; });
+  std::sort(entries_.begin(), entries_.end(), by_key);
   recompute_slots();
 }
 
@@ -551,8 +543,7 @@ void SweepAndPrune::rebuild() {
       entries_.push_back(entry);
     }
   }
-  std::sort(entries_.begin(), entries_.end(),
-            [](const Entry& x, const Entry& y) { return x.key < y.key; });
+  std::sort(entries_.begin(), entries_.end(), by_key);
   recompute_slots();
 }
 
@@ -560,7 +551,7 @@ void SweepAndPrune::query(const Aabb& box, std::vector<ProxyId>& out) const {
   ProxyStore::check_box(box, "query");
   // The array holds the boxes of the last update; touched proxies are tested on their
   // current boxes instead.
-  sweep(make_entry(null_proxy, box), [&](const Entry& e) {
+  sweep(oriented(box), [&](const Entry& e) {
     if (touched_[e.id] == 0) out.push_back(e.id);
   });
   for (const ProxyId id : touched_ids_) {

@@ -22,18 +22,10 @@ template <std::size_t kPairs>
 FaceSeparation small_face_separation(const PreparedHull& p, const PreparedHull& q,
                                      const Pose& q_to_p) {
   const std::span<const Vec2> pn = p.normals();
-  const __m128d c = _mm_set1_pd(q_to_p.rotation.cos);
-  const __m128d s = _mm_set1_pd(q_to_p.rotation.sin);
-  const __m128d tx = _mm_set1_pd(q_to_p.position.x());
-  const __m128d ty = _mm_set1_pd(q_to_p.position.y());
+  const PoseLanes map(q_to_p);
   __m128d mx[kPairs];
   __m128d my[kPairs];
-  for (std::size_t k = 0; k < kPairs; ++k) {
-    const __m128d x = _mm_load_pd(q.xs() + 2 * k);
-    const __m128d y = _mm_load_pd(q.ys() + 2 * k);
-    mx[k] = _mm_add_pd(_mm_sub_pd(_mm_mul_pd(c, x), _mm_mul_pd(s, y)), tx);
-    my[k] = _mm_add_pd(_mm_add_pd(_mm_mul_pd(s, x), _mm_mul_pd(c, y)), ty);
-  }
+  for (std::size_t k = 0; k < kPairs; ++k) map.apply(q.xs() + 2 * k, q.ys() + 2 * k, mx[k], my[k]);
   const std::span<const Real> offsets = p.face_offsets();
   FaceSeparation best{-std::numeric_limits<Real>::infinity(), 0};
   for (std::size_t i = 0; i < pn.size(); ++i) {

@@ -128,23 +128,27 @@ Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const Prepared
 
   const Rotation& rotation = reference_pose.rotation;
   manifold.normal = flip ? Vec2(-rotation.apply(normal)) : rotation.apply(normal);
+  // Adds incident point c (reference frame), placed midway between it and the reference face.
+  const auto emit = [&](const Vec2& c, Real separation, std::uint32_t id) {
+    ManifoldPoint& point = manifold.points[static_cast<std::size_t>(manifold.point_count++)];
+    point.point = reference_pose.apply(c - 0.5 * separation * normal);
+    point.separation = separation;
+    point.id = id | (flip ? kFlipped : 0);
+  };
   for (int k = 0; k < kept; ++k) {
     const ClipVertex& c = twice[static_cast<std::size_t>(k)];
     const Real separation = normal.dot(c.point - v1);
     if (separation > speculative_distance) continue;
-    ManifoldPoint& point = manifold.points[static_cast<std::size_t>(manifold.point_count++)];
-    point.point = reference_pose.apply(c.point - 0.5 * separation * normal);
-    point.separation = separation;
-    point.id = c.id | (flip ? kFlipped : 0);
+    emit(c.point, separation, c.id);
   }
   if (manifold.point_count == 0) {
     // Nothing clipped within the margin: the incident edge lies wholly beside the reference
     // face (corner against corner, or a many-sided hull reaching past a short face). One
     // point instead of none.
-    ManifoldPoint& point = manifold.points[0];
     if (apart) {
       const DistanceResult nearest = gjk_distance(a, pose_a, b, pose_b);
       if (nearest.distance > speculative_distance) return manifold;
+      ManifoldPoint& point = manifold.points[0];
       manifold.point_count = 1;
       manifold.normal = nearest.normal;
       point.point = 0.5 * (nearest.point_a + nearest.point_b);
@@ -161,22 +165,14 @@ Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const Prepared
         }
       }
       point.id = feature_id(ia, ib, kNearest);
-      return manifold;
+    } else {
+      // Overlapping: the incident hull's deepest vertex, unclipped.
+      const std::uint32_t deepest = static_cast<std::uint32_t>(
+          support_index(incident, incident_to_reference.rotation.apply_inverse(-normal)));
+      const Vec2 c = incident_to_reference.apply(incident.vertices()[deepest]);
+      emit(c, normal.dot(c - v1), feature_id(edge, deepest, kVertexInFace));
     }
-    // Overlapping: the incident hull's deepest vertex, unclipped.
-    manifold.point_count = 1;
-    const std::uint32_t deepest = static_cast<std::uint32_t>(
-        support_index(incident, incident_to_reference.rotation.apply_inverse(-normal)));
-    const Vec2 c = incident_to_reference.apply(incident.vertices()[deepest]);
-    const Real separation = normal.dot(c - v1);
-    const Rotation& r = reference_pose.rotation;
-    manifold.normal = flip ? Vec2(-r.apply(normal)) : r.apply(normal);
-    point.point = reference_pose.apply(c - 0.5 * separation * normal);
-    point.separation = separation;
-    point.id = feature_id(edge, deepest, kVertexInFace) | (flip ? kFlipped : 0);
-    return manifold;
   }
-
   return manifold;
 }
 

@@ -36,17 +36,12 @@ class PairFrame {
       // A small B is mapped into A's frame once, so each support of B in the loops is a plain
       // scan with no rotation of the direction and no transform of the answer. The same
       // operations in the same order as Pose::apply, so b_vertex is unchanged.
-      const __m128d c = _mm_set1_pd(relative_.rotation.cos);
-      const __m128d s = _mm_set1_pd(relative_.rotation.sin);
-      const __m128d tx = _mm_set1_pd(relative_.position.x());
-      const __m128d ty = _mm_set1_pd(relative_.position.y());
+      const PoseLanes map(relative_);
       for (std::size_t k = 0; k < kSupportBlock; k += 2) {
-        const __m128d x = _mm_loadu_pd(b.xs() + k);
-        const __m128d y = _mm_loadu_pd(b.ys() + k);
-        _mm_storeu_pd(bx_.data() + k,
-                      _mm_add_pd(_mm_sub_pd(_mm_mul_pd(c, x), _mm_mul_pd(s, y)), tx));
-        _mm_storeu_pd(by_.data() + k,
-                      _mm_add_pd(_mm_add_pd(_mm_mul_pd(s, x), _mm_mul_pd(c, y)), ty));
+        __m128d x, y;
+        map.apply(b.xs() + k, b.ys() + k, x, y);
+        _mm_store_pd(bx_.data() + k, x);
+        _mm_store_pd(by_.data() + k, y);
       }
       mapped_ = true;
       a_block_ = a.padded_size() == kSupportBlock;

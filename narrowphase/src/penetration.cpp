@@ -11,8 +11,7 @@ namespace mink {
 
 PenetrationResult penetration_by_faces(const PreparedHull& a, const Pose& pose_a,
                                        const PreparedHull& b, const Pose& pose_b) {
-  const detail::PairFrame frame(a, pose_a, b, pose_b);
-  const Pose b_to_a = frame.relative();
+  const Pose b_to_a = detail::PairFrame::relative_pose(pose_a, pose_b);
   const Pose a_to_b = detail::inverse(b_to_a);
   const detail::FaceSeparation on_a = detail::max_face_separation(a, b, b_to_a);
   const detail::FaceSeparation on_b = detail::max_face_separation(b, a, a_to_b);
@@ -25,7 +24,7 @@ PenetrationResult penetration_by_faces(const PreparedHull& a, const Pose& pose_a
     result.depth = std::max<Real>(0, -on_a.separation);
     const std::size_t ib = support_index(b, b_to_a.rotation.apply_inverse(-normal_local));
     // B's deepest vertex pushed out along the normal lands on A's face.
-    deepest_a = frame.b_vertex(ib) + result.depth * normal_local;
+    deepest_a = b_to_a.apply(b.vertices()[ib]) + result.depth * normal_local;
   } else {
     // A face of B: its outward normal points from B towards A.
     normal_local = -b_to_a.rotation.apply(b.normals()[on_b.edge]);
@@ -40,8 +39,8 @@ PenetrationResult penetration_by_faces(const PreparedHull& a, const Pose& pose_a
 
 PenetrationResult penetration(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
                               const Pose& pose_b, const SimplexCache& start) {
-  const detail::PairFrame frame(a, pose_a, b, pose_b);
   if (start.count != 3) return penetration_by_faces(a, pose_a, b, pose_b);
+  const detail::PairFrame frame(a, pose_a, b, pose_b);
   std::vector<detail::LocalVertex> polygon;
   polygon.reserve(16);
   for (int i = 0; i < 3; ++i) {

@@ -67,6 +67,10 @@ class SweepAndPrune final : public Broadphase {
   std::uint32_t band_of(Real band_coordinate) const;
 
   static bool overlap(const Entry& x, const Entry& y);
+  /// Calls visit(entry) for every stored entry overlapping q's box. start_in_band(band,
+  /// band_end, key) finds the band's first entry with a key not below `key`.
+  template <typename Visit, typename StartInBand>
+  void sweep_bands(const Entry& q, Visit&& visit, StartInBand&& start_in_band) const;
   /// Calls visit(entry) for every stored entry overlapping `entry`'s box.
   template <typename Visit>
   void sweep(const Entry& entry, Visit&& visit) const;
