@@ -143,15 +143,8 @@ inline Vec2 rescaled_direction(const Vec2& v) {
 // orient2d(p, q, origin): the same products and the same filter with c = 0 folded in (the
 // generic call subtracts a zero it cannot see is zero), so the same sign.
 inline int orient_about_origin(const Vec2& p, const Vec2& q) noexcept {
-  const Real det_left = p.x() * q.y();
-  const Real det_right = p.y() * q.x();
-  const Real det = det_left - det_right;
-  const Real det_sum = std::abs(det_left) + std::abs(det_right);
-  constexpr Real kRelativeBound = 3.3306690738754716e-16 + 7.888609052210118e-31;
-  if (det_sum >= 0x1p-900 && det_sum <= 0x1p+1000 && std::abs(det) > kRelativeBound * det_sum) {
-    return det > 0 ? 1 : -1;
-  }
-  return orient2d_exact(p, q, Vec2(0, 0));
+  const int sign = certified_sign(p.x() * q.y(), p.y() * q.x());
+  return sign != 0 ? sign : orient2d_exact(p, q, Vec2(0, 0));
 }
 
 inline Real cross(const Vec2& u, const Vec2& v) {
