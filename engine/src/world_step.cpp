@@ -284,12 +284,10 @@ void WorldState::prepare_contacts() {
   solver_info.clear();
   body_solver_index.resize(bodies.size());
   for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-    Body& b = bodies[i];
-    b.solver_index = -1;
+    const Body& b = bodies[i];
     body_solver_index[i] = -1;
     if (!b.alive || !moves(b)) continue;
-    b.solver_index = static_cast<std::int32_t>(solver_bodies.size());
-    body_solver_index[i] = b.solver_index;
+    body_solver_index[i] = static_cast<std::int32_t>(solver_bodies.size());
     solver_info.push_back({b.center.x(), b.center.y(), b.inv_mass, b.inv_inertia});
     detail::SolverBody sb;
     sb.vx = b.velocity.x();
@@ -309,7 +307,6 @@ void WorldState::prepare_contacts() {
     solver_to_body.push_back(i);
   }
   const auto still = static_cast<std::int32_t>(solver_bodies.size());
-  still_index = still;
   solver_bodies.emplace_back();
   solver_params.emplace_back();
   counters.awake_bodies = solver_to_body.size();
@@ -329,9 +326,11 @@ void WorldState::prepare_contacts() {
     const std::int32_t ia = body_solver_index[c.body_a], ib = body_solver_index[c.body_b];
     if (ia < 0 && ib < 0) continue;
     constraint_contacts.push_back(ci);
+    // The still body is fixed as well (the colouring relies on it), so only the records of
+    // moving bodies are read.
     constraint_bodies.push_back({ia < 0 ? still : ia, ib < 0 ? still : ib,
-                                 bodies[c.body_a].type != BodyType::dynamic,
-                                 bodies[c.body_b].type != BodyType::dynamic});
+                                 ia < 0 || bodies[c.body_a].type != BodyType::dynamic,
+                                 ib < 0 || bodies[c.body_b].type != BodyType::dynamic});
   }
   // Constraints in order of their first moving body (a stable counting sort): neighbouring
   // constraints then touch neighbouring bodies and the solver's gathers stay in cache.
@@ -357,18 +356,16 @@ void WorldState::prepare_contacts() {
 
   // Per-constraint body data comes from the compact solver arrays, not the body records.
   const auto info = [&](std::uint32_t body, std::int32_t index) {
-    if (index >= 0) return solver_info[static_cast<std::size_t>(index)];
+    if (index != still) return solver_info[static_cast<std::size_t>(index)];
     return detail::SolverBodyInfo{bodies[body].center.x(), bodies[body].center.y(), 0, 0};
   };
   detail::ContactConstraint k;
   for (std::uint32_t r = 0; r < constraint_contacts.size(); ++r) {
-    const std::uint32_t ci = constraint_contacts[r];
-    const Contact& c = contacts[ci];
-    const std::int32_t ia = body_solver_index[c.body_a], ib = body_solver_index[c.body_b];
-    const detail::SolverBodyInfo a = info(c.body_a, ia), b = info(c.body_b, ib);
-    k.contact = ci;
-    k.body_a = ia < 0 ? still : ia;
-    k.body_b = ib < 0 ? still : ib;
+    const Contact& c = contacts[constraint_contacts[r]];
+    const detail::ConstraintBodies& cb = constraint_bodies[r];
+    const detail::SolverBodyInfo a = info(c.body_a, cb.a), b = info(c.body_b, cb.b);
+    k.body_a = cb.a;
+    k.body_b = cb.b;
     k.inv_mass_a = a.inv_mass;
     k.inv_inertia_a = a.inv_inertia;
     k.inv_mass_b = b.inv_mass;
