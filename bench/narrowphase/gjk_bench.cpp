@@ -70,8 +70,9 @@ Body random_body(std::mt19937_64& rng, std::size_t n, Real spread) {
   std::vector<Vec2> points = mink::generate_points(mink::PointDistribution::on_circle, n, rng());
   const Real sy = stretch(rng);
   for (Vec2& p : points) p.y() *= sy;
-  Body body{PreparedHull(mink::build_hull(points, mink::HullAlgorithm::monotone_chain)), {}};
-  body.hull = float_hull(points, body.local);
+  std::vector<b2Vec2> local;
+  PreparedHull hull = float_hull(points, local);
+  Body body{std::move(hull), std::move(local)};
   body.x = static_cast<float>(position(rng));
   body.y = static_cast<float>(position(rng));
   body.angle = static_cast<float>(angle(rng));
@@ -87,8 +88,9 @@ struct Pair {
 };
 
 std::vector<Vec2> world_vertices(const Body& body) {
+  const Pose pose = body.pose();
   std::vector<Vec2> world;
-  for (const Vec2& v : body.hull.vertices()) world.push_back(body.pose().apply(v));
+  for (const Vec2& v : body.hull.vertices()) world.push_back(pose.apply(v));
   return world;
 }
 

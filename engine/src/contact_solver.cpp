@@ -58,8 +58,6 @@ typedef double Wide __attribute__((vector_size(32), aligned(32)));
 
 struct WideConstraint {
   std::int32_t body_a[4], body_b[4];
-  std::uint32_t constraint[4];  // scalar constraint per lane; lanes past `lanes` are padding
-  int lanes = 0;
   Wide inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
   Wide nx, ny, friction, bias_rate, mass_scale, impulse_scale;
   Wide dx, dy;  // centre of A minus centre of B: anchor on B = anchor on A + (dx, dy)
@@ -256,21 +254,9 @@ inline WideBody gather(const SolverBody* bodies, const std::int32_t* index) {
           Wide{b0.qs, b1.qs, b2.qs, b3.qs}};
 }
 
-struct WideVelocity {
-  Wide vx, vy, w;
-};
-
-inline WideVelocity gather_velocity(const SolverBody* bodies, const std::int32_t* index) {
-  const SolverBody& b0 = bodies[index[0]];
-  const SolverBody& b1 = bodies[index[1]];
-  const SolverBody& b2 = bodies[index[2]];
-  const SolverBody& b3 = bodies[index[3]];
-  return {Wide{b0.vx, b1.vx, b2.vx, b3.vx}, Wide{b0.vy, b1.vy, b2.vy, b3.vy},
-          Wide{b0.w, b1.w, b2.w, b3.w}};
-}
-
-template <typename State>
-inline void scatter(SolverBody* bodies, const std::int32_t* index, const State& w) {
+// Only velocities change while solving. Lanes sharing the still body write back the same
+// zeros it holds (its masses are zero), so the order of those writes does not matter.
+inline void scatter(SolverBody* bodies, const std::int32_t* index, const WideBody& w) {
   for (int lane = 0; lane < 4; ++lane) {
     SolverBody& b = bodies[index[lane]];
     b.vx = w.vx[lane];
@@ -279,15 +265,12 @@ inline void scatter(SolverBody* bodies, const std::int32_t* index, const State& 
   }
 }
 
-// Only velocities change while solving. Lanes sharing the still body write back the same
-// zeros it holds (its masses are zero), so the order of those writes does not matter.
-
 __attribute__((target_clones("avx2", "default"))) void warm_start_wide(SolverBody* bodies,
                                                                        WideConstraint* begin,
                                                                        WideConstraint* end) {
   for (WideConstraint* c = begin; c != end; ++c) {
-    WideVelocity a = gather_velocity(bodies, c->body_a);
-    WideVelocity b = gather_velocity(bodies, c->body_b);
+    WideBody a = gather(bodies, c->body_a);
+    WideBody b = gather(bodies, c->body_b);
     const Wide tx = c->ny, ty = -c->nx;
     for (int j = 0; j < 2; ++j) {
       const WideConstraint::Point& p = c->points[j];
@@ -386,10 +369,9 @@ __attribute__((target_clones("avx2", "default"))) void solve_wide(
   }
 }
 
-void pack(WideConstraint& w, int lane, const ContactConstraint& c, std::uint32_t index) {
+void pack(WideConstraint& w, int lane, const ContactConstraint& c) {
   w.body_a[lane] = c.body_a;
   w.body_b[lane] = c.body_b;
-  w.constraint[lane] = index;
   w.inv_mass_a[lane] = c.inv_mass_a;
   w.inv_inertia_a[lane] = c.inv_inertia_a;
   w.inv_mass_b[lane] = c.inv_mass_b;
@@ -451,8 +433,7 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
   std::array<std::uint32_t, kColorCount + 1> counts{};
   for (std::uint32_t i = 0; i < constraints.size(); ++i) {
     const std::int32_t a = constraints[i].a, b = constraints[i].b;
-    const bool a_fixed = a == still || constraints[i].a_fixed;
-    const bool b_fixed = b == still || constraints[i].b_fixed;
+    const bool a_fixed = constraints[i].a_fixed, b_fixed = constraints[i].b_fixed;
     const std::uint64_t a_bit = a_fixed ? 0 : std::uint64_t{1} << (a & 63);
     const std::uint64_t b_bit = b_fixed ? 0 : std::uint64_t{1} << (b & 63);
     const std::size_t a_word = static_cast<std::size_t>(a) >> 6;
@@ -483,7 +464,7 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
     const std::uint8_t color = color_of_[i];
     const std::uint32_t position = fill[color]++;
     if (!wide) {
-      slot_[i] = position;
+      slot_[i] = kScalar | position;
     } else if (color == kColorCount) {
       slot_[i] = kScalar | (position - color_begin_[kColorCount]);
     } else {
@@ -503,12 +484,10 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
 void ContactSolver::set(std::uint32_t index, const ContactConstraint& constraint) {
   const std::uint32_t slot = slot_[index];
   bouncy_ = bouncy_ || constraint.restitution > 0;
-  if (!wide_mode_) {
-    scalar_[slot] = constraint;
-  } else if (slot & kScalar) {
+  if (slot & kScalar) {
     scalar_[slot & ~kScalar] = constraint;
   } else {
-    pack(wide_[slot / 4], static_cast<int>(slot % 4), constraint, index);
+    pack(wide_[slot / 4], static_cast<int>(slot % 4), constraint);
     if (constraint.restitution > 0) restitution_.emplace_back(slot, constraint);
   }
 }
@@ -522,13 +501,9 @@ void ContactSolver::finish() {
   padding.mass_scale = 1;
   for (std::size_t c = 0; c < kColorCount; ++c) {
     const std::uint32_t count = color_begin_[c + 1] - color_begin_[c];
-    for (std::uint32_t k = wide_begin_[c]; k < wide_begin_[c + 1]; ++k) {
-      wide_[k].lanes =
-          static_cast<int>(std::min<std::uint32_t>(4, count - 4 * (k - wide_begin_[c])));
-    }
     if (count % 4 == 0) continue;
     WideConstraint& w = wide_[wide_begin_[c + 1] - 1];
-    for (int lane = static_cast<int>(count % 4); lane < 4; ++lane) pack(w, lane, padding, 0);
+    for (int lane = static_cast<int>(count % 4); lane < 4; ++lane) pack(w, lane, padding);
   }
   // Bounce in colour order, as the one-at-a-time twin does.
   std::sort(restitution_.begin(), restitution_.end(),
@@ -537,8 +512,8 @@ void ContactSolver::finish() {
 
 void ContactSolver::impulses(std::uint32_t index, Real normal[2], Real tangent[2]) const {
   const std::uint32_t slot = slot_[index];
-  if (!wide_mode_ || (slot & kScalar)) {
-    const ContactConstraint& c = scalar_[wide_mode_ ? slot & ~kScalar : slot];
+  if (slot & kScalar) {
+    const ContactConstraint& c = scalar_[slot & ~kScalar];
     for (int j = 0; j < 2; ++j) {
       normal[j] = c.points[j].normal_impulse;
       tangent[j] = c.points[j].tangent_impulse;

@@ -43,7 +43,6 @@ struct ContactConstraintPoint {
 struct ContactConstraint {
   std::int32_t body_a = 0, body_b = 0;  // indices into the solver body array
   std::int32_t point_count = 0;
-  std::uint32_t contact = 0;  // the contact record the impulses go back to
   Real inv_mass_a = 0, inv_inertia_a = 0, inv_mass_b = 0, inv_inertia_b = 0;
   Real nx = 0, ny = 0;
   Real dx = 0, dy = 0;  // centre of A minus centre of B; anchor on B = anchor on A + (dx, dy)
@@ -94,10 +93,11 @@ class ContactSolver {
   ContactSolver(ContactSolver&&) noexcept;
   ContactSolver& operator=(ContactSolver&&) noexcept;
 
-  // `still` is the index of the body standing in for static and sleeping bodies; it may be
-  // shared by any number of constraints of one colour. `wide` false keeps every constraint
-  // scalar and solves them one at a time in the same colour order: the slow twin the tests
-  // compare the SIMD path against (the results are bitwise equal).
+  // `still` is the index of the body standing in for static and sleeping bodies; constraints
+  // mark it fixed, so it may be shared by any number of constraints of one colour. `wide`
+  // false keeps every constraint scalar and solves them one at a time in the same colour
+  // order: the slow twin the tests compare the SIMD path against (the results are bitwise
+  // equal).
   void begin(std::span<const ConstraintBodies> constraints, std::int32_t still,
              std::size_t body_count, bool wide);
   // Constraint `index` (as passed to begin), once each, then finish().
@@ -117,8 +117,8 @@ class ContactSolver {
   std::int32_t still_ = 0;
   std::size_t overflow_count_ = 0;
   // Per constraint: where it lives. Wide mode: 4 * wide index + lane, or kScalar | index
-  // into scalar_ for the overflow. Scalar mode: index into scalar_ (colour order, then the
-  // overflow).
+  // into scalar_ for the overflow. Scalar mode: kScalar | index into scalar_ (colour order,
+  // then the overflow), so set() and impulses() need not ask which mode they are in.
   std::vector<std::uint32_t> slot_;
   std::vector<ContactConstraint> scalar_;
   std::vector<std::uint32_t> color_begin_;  // colour positions, one past the last at the end

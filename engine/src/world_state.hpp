@@ -17,7 +17,7 @@ namespace mink {
 namespace detail {
 
 // What every step reads sits in the first two cache lines (pose, velocities, inverse masses,
-// solver index, flags); the rest is touched by the API and the sleep pass only.
+// flags); the rest is touched by the API and the sleep pass only.
 struct alignas(64) Body {
   // Pose: centre of mass and rotation are the state; the origin follows from them.
   Vec2 center{0, 0};
@@ -26,8 +26,7 @@ struct alignas(64) Body {
   Vec2 velocity{0, 0};
   Real angular_velocity = 0;
   Real inv_mass = 0, inv_inertia = 0;
-  Real extent = 0;                 // farthest shape vertex from the centre of mass
-  std::int32_t solver_index = -1;  // during a step
+  Real extent = 0;  // farthest shape vertex from the centre of mass
   BodyType type = BodyType::static_body;
   bool alive = false;
   bool awake = true;
@@ -123,7 +122,6 @@ struct WorldState {
   std::vector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
   std::vector<detail::ConstraintBodies> constraint_bodies, sorted_bodies;
   detail::ContactSolver contact_solver;
-  std::int32_t still_index = 0;
   std::vector<std::uint32_t> island_parent;
   std::vector<Real> island_min_sleep;
 

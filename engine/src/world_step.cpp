@@ -127,10 +127,6 @@ void WorldState::collide() {
     const Shape& shape_a = shapes[c.shape_a];
     const Shape& shape_b = shapes[c.shape_b];
     const bool was_touching = c.touching;
-    const Manifold old = c.manifold;
-    const Real old_normal[2] = {c.normal_impulse[0], c.normal_impulse[1]};
-    const Real old_tangent[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
-
     const Pose pose_a = body_a.pose(), pose_b = body_b.pose();
     // B's pose in A's frame.
     const Rotation& ra = pose_a.rotation;
@@ -139,71 +135,72 @@ void WorldState::collide() {
     const Real rel_sin = ra.cos * rb.sin - ra.sin * rb.cos;
     const Vec2 rel_position = ra.apply_inverse(pose_b.position - pose_a.position);
     detail::ManifoldCache& cache = c.cache;
+    bool same_features = false;
     if (reuse && cache.valid) {
       const Real turn = std::abs(cache.cos * rel_sin - cache.sin * rel_cos);  // sin of the change
       const Real shift =
           std::abs(rel_position.x() - cache.x) + std::abs(rel_position.y() - cache.y);
-      if (shift + turn * (body_a.extent + body_b.extent) < reuse_tolerance) {
-        // Same features: move the stored surface points with their bodies and measure again.
-        const Vec2 normal = ra.apply(cache.normal);
-        c.manifold.normal = normal;
-        bool touching = false;
+      same_features = shift + turn * (body_a.extent + body_b.extent) < reuse_tolerance;
+    }
+
+    if (same_features) {
+      // Move the stored surface points with their bodies and measure again; the impulses stay.
+      const Vec2 normal = ra.apply(cache.normal);
+      c.manifold.normal = normal;
+      for (int j = 0; j < c.manifold.point_count; ++j) {
+        const Vec2 on_a = pose_a.apply(cache.on_a[j]);
+        const Vec2 on_b = pose_b.apply(cache.on_b[j]);
+        ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+        p.separation = normal.dot(on_b - on_a);
+        p.point = 0.5 * (on_a + on_b);
+      }
+    } else {
+      const Manifold old = c.manifold;
+      const Real old_normal[2] = {c.normal_impulse[0], c.normal_impulse[1]};
+      const Real old_tangent[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
+      if (!shape_a.aabb.overlaps(shape_b.aabb)) {
+        c.manifold.point_count = 0;
+      } else {
+        // Speculative distance: the base margin plus how far the pair may close this step.
+        const Vec2 dv = body_b.velocity - body_a.velocity;
+        const Real closing = dv.norm() + std::abs(body_a.angular_velocity) * body_a.extent +
+                             std::abs(body_b.angular_velocity) * body_b.extent;
+        c.manifold = collide_hulls(*shape_a.hull, pose_a, *shape_b.hull, pose_b,
+                                   touching_distance + dt * closing);
+      }
+      cache.valid = c.manifold.point_count > 0;
+      if (cache.valid) {
+        cache.cos = rel_cos;
+        cache.sin = rel_sin;
+        cache.x = rel_position.x();
+        cache.y = rel_position.y();
+        const Vec2 normal = c.manifold.normal;
+        cache.normal = ra.apply_inverse(normal);
         for (int j = 0; j < c.manifold.point_count; ++j) {
-          const Vec2 on_a = pose_a.apply(cache.on_a[j]);
-          const Vec2 on_b = pose_b.apply(cache.on_b[j]);
-          ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
-          p.separation = normal.dot(on_b - on_a);
-          p.point = 0.5 * (on_a + on_b);
-          touching = touching || p.separation < touching_distance;
+          const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+          cache.on_a[j] = pose_a.apply_inverse(p.point - 0.5 * p.separation * normal);
+          cache.on_b[j] = pose_b.apply_inverse(p.point + 0.5 * p.separation * normal);
         }
-        c.touching = touching;
-        if (touching && !was_touching) {
-          begin_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b)});
-        } else if (!touching && was_touching) {
-          end_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b)});
+      }
+      // Warm start: carry the impulses of the point with the same feature id.
+      for (int j = 0; j < c.manifold.point_count; ++j) {
+        const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+        c.normal_impulse[j] = 0;
+        c.tangent_impulse[j] = 0;
+        for (int k = 0; k < old.point_count; ++k) {
+          if (old.points[static_cast<std::size_t>(k)].id == p.id) {
+            c.normal_impulse[j] = old_normal[k];
+            c.tangent_impulse[j] = old_tangent[k];
+            break;
+          }
         }
-        continue;
       }
     }
 
-    if (!shape_a.aabb.overlaps(shape_b.aabb)) {
-      c.manifold.point_count = 0;
-    } else {
-      // Speculative distance: the base margin plus how far the pair may close this step.
-      const Vec2 dv = body_b.velocity - body_a.velocity;
-      const Real closing = dv.norm() + std::abs(body_a.angular_velocity) * body_a.extent +
-                           std::abs(body_b.angular_velocity) * body_b.extent;
-      c.manifold = collide_hulls(*shape_a.hull, pose_a, *shape_b.hull, pose_b,
-                                 touching_distance + dt * closing);
-    }
-    cache.valid = c.manifold.point_count > 0;
-    if (cache.valid) {
-      cache.cos = rel_cos;
-      cache.sin = rel_sin;
-      cache.x = rel_position.x();
-      cache.y = rel_position.y();
-      const Vec2 normal = c.manifold.normal;
-      cache.normal = ra.apply_inverse(normal);
-      for (int j = 0; j < c.manifold.point_count; ++j) {
-        const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
-        cache.on_a[j] = pose_a.apply_inverse(p.point - 0.5 * p.separation * normal);
-        cache.on_b[j] = pose_b.apply_inverse(p.point + 0.5 * p.separation * normal);
-      }
-    }
     bool touching = false;
     for (int j = 0; j < c.manifold.point_count; ++j) {
       const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
       touching = touching || p.separation < touching_distance;
-      // Warm start: carry the impulses of the point with the same feature id.
-      c.normal_impulse[j] = 0;
-      c.tangent_impulse[j] = 0;
-      for (int k = 0; k < old.point_count; ++k) {
-        if (old.points[static_cast<std::size_t>(k)].id == p.id) {
-          c.normal_impulse[j] = old_normal[k];
-          c.tangent_impulse[j] = old_tangent[k];
-          break;
-        }
-      }
     }
     c.touching = touching;
     if (touching && !was_touching) {
@@ -284,12 +281,10 @@ void WorldState::prepare_contacts() {
   solver_info.clear();
   body_solver_index.resize(bodies.size());
   for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-    Body& b = bodies[i];
-    b.solver_index = -1;
+    const Body& b = bodies[i];
     body_solver_index[i] = -1;
     if (!b.alive || !moves(b)) continue;
-    b.solver_index = static_cast<std::int32_t>(solver_bodies.size());
-    body_solver_index[i] = b.solver_index;
+    body_solver_index[i] = static_cast<std::int32_t>(solver_bodies.size());
     solver_info.push_back({b.center.x(), b.center.y(), b.inv_mass, b.inv_inertia});
     detail::SolverBody sb;
     sb.vx = b.velocity.x();
@@ -309,7 +304,6 @@ void WorldState::prepare_contacts() {
     solver_to_body.push_back(i);
   }
   const auto still = static_cast<std::int32_t>(solver_bodies.size());
-  still_index = still;
   solver_bodies.emplace_back();
   solver_params.emplace_back();
   counters.awake_bodies = solver_to_body.size();
@@ -329,9 +323,11 @@ void WorldState::prepare_contacts() {
     const std::int32_t ia = body_solver_index[c.body_a], ib = body_solver_index[c.body_b];
     if (ia < 0 && ib < 0) continue;
     constraint_contacts.push_back(ci);
+    // The still body is fixed as well (the colouring relies on it), so only the records of
+    // moving bodies are read.
     constraint_bodies.push_back({ia < 0 ? still : ia, ib < 0 ? still : ib,
-                                 bodies[c.body_a].type != BodyType::dynamic,
-                                 bodies[c.body_b].type != BodyType::dynamic});
+                                 ia < 0 || bodies[c.body_a].type != BodyType::dynamic,
+                                 ib < 0 || bodies[c.body_b].type != BodyType::dynamic});
   }
   // Constraints in order of their first moving body (a stable counting sort): neighbouring
   // constraints then touch neighbouring bodies and the solver's gathers stay in cache.
@@ -357,18 +353,16 @@ void WorldState::prepare_contacts() {
 
   // Per-constraint body data comes from the compact solver arrays, not the body records.
   const auto info = [&](std::uint32_t body, std::int32_t index) {
-    if (index >= 0) return solver_info[static_cast<std::size_t>(index)];
+    if (index != still) return solver_info[static_cast<std::size_t>(index)];
     return detail::SolverBodyInfo{bodies[body].center.x(), bodies[body].center.y(), 0, 0};
   };
   detail::ContactConstraint k;
   for (std::uint32_t r = 0; r < constraint_contacts.size(); ++r) {
-    const std::uint32_t ci = constraint_contacts[r];
-    const Contact& c = contacts[ci];
-    const std::int32_t ia = body_solver_index[c.body_a], ib = body_solver_index[c.body_b];
-    const detail::SolverBodyInfo a = info(c.body_a, ia), b = info(c.body_b, ib);
-    k.contact = ci;
-    k.body_a = ia < 0 ? still : ia;
-    k.body_b = ib < 0 ? still : ib;
+    const Contact& c = contacts[constraint_contacts[r]];
+    const detail::ConstraintBodies& cb = constraint_bodies[r];
+    const detail::SolverBodyInfo a = info(c.body_a, cb.a), b = info(c.body_b, cb.b);
+    k.body_a = cb.a;
+    k.body_b = cb.b;
     k.inv_mass_a = a.inv_mass;
     k.inv_inertia_a = a.inv_inertia;
     k.inv_mass_b = b.inv_mass;

@@ -247,11 +247,18 @@ Layout uniform_layout() {
   return layout;
 }
 
-TEST(SweepAndPruneOracle, UniformUnitBoxes) {
-  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-    EXPECT_GT(run(uniform_layout(), seed), std::size_t{50} / (kScale * kScale));
-    if (HasFailure()) return;
+// Runs the layout for seeds first ... last: each run's largest pair count must exceed `pairs`
+// (scaled down in sanitized builds). Stops at the first failure.
+void expect_pairs_over(const Layout& layout, std::uint64_t first, std::uint64_t last,
+                       std::size_t pairs) {
+  for (std::uint64_t seed = first; seed <= last; ++seed) {
+    EXPECT_GT(run(layout, seed), pairs / (kScale * kScale));
+    if (testing::Test::HasFailure()) return;
   }
+}
+
+TEST(SweepAndPruneOracle, UniformUnitBoxes) {
+  expect_pairs_over(uniform_layout(), 1, 6, 50);
 }
 
 TEST(SweepAndPruneOracle, MixedSizesFromTinyToHuge) {
@@ -266,10 +273,7 @@ TEST(SweepAndPruneOracle, MixedSizesFromTinyToHuge) {
     return box_at(center, Vec2(uniform(r, 0.2, 1), uniform(r, 0.2, 1)));
   };
   layout.step = [](std::mt19937_64& r, const Aabb& box) { return jitter(r, box, 0.3); };
-  for (std::uint64_t seed = 11; seed <= 14; ++seed) {
-    EXPECT_GT(run(layout, seed), std::size_t{50} / (kScale * kScale));
-    if (HasFailure()) return;
-  }
+  expect_pairs_over(layout, 11, 14, 50);
 }
 
 TEST(SweepAndPruneOracle, AllBoxesOnOneVerticalLine) {
@@ -282,10 +286,7 @@ TEST(SweepAndPruneOracle, AllBoxesOnOneVerticalLine) {
     const Real dy = uniform(r, -0.2, 0.2);
     return Aabb{box.lower + Vec2(0, dy), box.upper + Vec2(0, dy)};
   };
-  for (std::uint64_t seed = 21; seed <= 24; ++seed) {
-    EXPECT_GT(run(layout, seed), std::size_t{50} / (kScale * kScale));
-    if (HasFailure()) return;
-  }
+  expect_pairs_over(layout, 21, 24, 50);
 }
 
 TEST(SweepAndPruneOracle, IdenticalBoxes) {
@@ -298,10 +299,7 @@ TEST(SweepAndPruneOracle, IdenticalBoxes) {
   layout.step = [](std::mt19937_64& r, const Aabb& box) {
     return uniform(r, 0, 1) < 0.5 ? box_at(Vec2(1, 2), Vec2(0.5, 0.5)) : jitter(r, box, 0.5);
   };
-  for (std::uint64_t seed = 31; seed <= 33; ++seed) {
-    EXPECT_GT(run(layout, seed), std::size_t{1000} / (kScale * kScale));
-    if (HasFailure()) return;
-  }
+  expect_pairs_over(layout, 31, 33, 1000);
 }
 
 TEST(SweepAndPruneOracle, TouchingGridWithoutMargin) {
@@ -317,20 +315,14 @@ TEST(SweepAndPruneOracle, TouchingGridWithoutMargin) {
     const Vec2 shift(std::floor(uniform(r, -1, 2)), std::floor(uniform(r, -1, 2)));
     return Aabb{box.lower + shift, box.upper + shift};
   };
-  for (std::uint64_t seed = 41; seed <= 44; ++seed) {
-    EXPECT_GT(run(layout, seed), std::size_t{100} / (kScale * kScale));
-    if (HasFailure()) return;
-  }
+  expect_pairs_over(layout, 41, 44, 100);
 }
 
 TEST(SweepAndPruneOracle, MostlyStaticScene) {
   Layout layout = uniform_layout();
   layout.name = "mostly static";
   layout.static_fraction = 0.8;
-  for (std::uint64_t seed = 51; seed <= 53; ++seed) {
-    EXPECT_GT(run(layout, seed), std::size_t{20} / (kScale * kScale));
-    if (HasFailure()) return;
-  }
+  expect_pairs_over(layout, 51, 53, 20);
 }
 
 TEST(SweepAndPruneOracle, FewMoversAmongManyResting) {
@@ -343,10 +335,7 @@ TEST(SweepAndPruneOracle, FewMoversAmongManyResting) {
   layout.move_fraction = 0.03;
   layout.create_rate = 0.002;
   layout.destroy_rate = 0.002;
-  for (std::uint64_t seed = 71; seed <= 72; ++seed) {
-    EXPECT_GT(run(layout, seed), std::size_t{100} / (kScale * kScale));
-    if (HasFailure()) return;
-  }
+  expect_pairs_over(layout, 71, 72, 100);
 }
 
 TEST(SweepAndPruneOracle, ClustersThatDriftApart) {
@@ -366,10 +355,7 @@ TEST(SweepAndPruneOracle, ClustersThatDriftApart) {
     const Vec2 shift = c.normalized() * uniform(r, 0, 1.5);
     return Aabb{box.lower + shift, box.upper + shift};
   };
-  for (std::uint64_t seed = 61; seed <= 64; ++seed) {
-    EXPECT_GT(run(layout, seed), std::size_t{50} / (kScale * kScale));
-    if (HasFailure()) return;
-  }
+  expect_pairs_over(layout, 61, 64, 50);
 }
 
 TEST(SweepAndPruneOracle, RebuildsAndChoosesTheWideAxis) {

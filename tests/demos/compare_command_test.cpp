@@ -2,8 +2,8 @@
 
 #include <string>
 
+#include "cli_test_support.hpp"
 #include "contact_compare.hpp"
-#include "scene_test_support.hpp"
 
 namespace {
 

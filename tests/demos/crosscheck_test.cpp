@@ -1,9 +1,9 @@
 #include <gtest/gtest.h>
 
-#include <sstream>
 #include <string>
 
-#include "commands.hpp"
+#include "brute_force_support.hpp"
+#include "cli_test_support.hpp"
 #include "exact_overlap_oracle.hpp"
 #include "gjk_crosscheck.hpp"
 #include "mink/geometry/convex_hull.hpp"
@@ -23,26 +23,20 @@ constexpr int kExactPairs = 3000;
 #endif
 
 TEST(Crosscheck, AgreesWithBox2dOutsideTheBand) {
-  std::istringstream in;
-  std::ostringstream out;
-  std::ostringstream err;
   const std::string pairs = std::to_string(kBox2dPairs);
-  const char* argv[] = {"mink", "crosscheck", "gjk", "--pairs", pairs.c_str(), "--seed", "99"};
-  EXPECT_EQ(mink::cli::run(7, argv, {in, out, err}), 0) << out.str() << err.str();
-  EXPECT_NE(out.str().find("gjk crosscheck: " + pairs + " pairs (seed 99)"), std::string::npos)
-      << out.str();
-  EXPECT_NE(out.str().find("(0 outside the 1e-06 band of touching)"), std::string::npos);
+  const CliResult r = run_cli({"crosscheck", "gjk", "--pairs", pairs, "--seed", "99"});
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("gjk crosscheck: " + pairs + " pairs (seed 99)"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("(0 outside the 1e-06 band of touching)"), std::string::npos);
 }
 
 TEST(Crosscheck, ReportsDisagreementsAndFailsOutsideATinyBand) {
   // With a band far below float precision, Box2D's float answers near touching must show up
   // as failures: the check can fail.
-  std::istringstream in;
-  std::ostringstream out;
-  std::ostringstream err;
-  const char* argv[] = {"mink", "crosscheck", "gjk", "--pairs", "5000", "--band", "1e-15"};
-  EXPECT_EQ(mink::cli::run(7, argv, {in, out, err}), 1);
-  EXPECT_NE(out.str().find("OUTSIDE the 1e-15 band"), std::string::npos) << out.str();
+  const CliResult r = run_cli({"crosscheck", "gjk", "--pairs", "5000", "--band", "1e-15"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.out.find("OUTSIDE the 1e-15 band"), std::string::npos) << r.out;
 }
 
 // The same kind of pairs against CGAL's exact predicates: our verdicts are right except, at
@@ -58,7 +52,7 @@ TEST(Crosscheck, VerdictsAgreeWithTheExactOracle) {
     const bool exact = exact_overlap(cgal_hull(pair.a), cgal_hull(pair.b));
     const mink::OverlapResult boolean = mink::gjk_overlap(a, identity, b, identity);
     const mink::DistanceResult distance = mink::gjk_distance(a, identity, b, identity);
-    const Real gap = exact ? scan_depth(pair.a, pair.b) : scan_distance(pair.a, pair.b);
+    const Real gap = exact ? brute_depth(pair.a, pair.b).depth : scan_distance(pair.a, pair.b);
     if (gap < 1e-12) {
       ++near_touching;
       continue;

@@ -1,18 +1,16 @@
 #pragma once
 
 // An oracle for `mink overlap` independent of Minkowski: CGAL's hull and CGAL's exact
-// predicates for the verdict, and brute-force scans of every vertex-edge pair for the
-// distance and every edge normal for the depth.
+// predicates for the verdict; brute_force_support.hpp scans for the distance and the depth.
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/convex_hull_2.h>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <span>
 #include <vector>
 
+#include "brute_force_support.hpp"
 #include "mink/geometry/types.hpp"
 
 namespace mink_test {
@@ -47,41 +45,6 @@ inline bool exact_overlap(std::span<const Vec2> a, std::span<const Vec2> b) {
     return false;
   };
   return !separates(a, b) && !separates(b, a);
-}
-
-inline Real scan_distance(std::span<const Vec2> a, std::span<const Vec2> b) {
-  Real best = std::numeric_limits<Real>::infinity();
-  for (int pass = 0; pass < 2; ++pass) {
-    const auto p = pass == 0 ? a : b;
-    const auto q = pass == 0 ? b : a;
-    for (const Vec2& v : p) {
-      for (std::size_t i = 0; i < q.size(); ++i) {
-        const Vec2 s0 = q[i];
-        const Vec2 e = q[(i + 1) % q.size()] - s0;
-        const Real t = std::clamp((v - s0).dot(e) / e.squaredNorm(), Real(0), Real(1));
-        best = std::min(best, (v - s0 - t * e).norm());
-      }
-    }
-  }
-  return best;
-}
-
-inline Real scan_depth(std::span<const Vec2> a, std::span<const Vec2> b) {
-  Real best = std::numeric_limits<Real>::infinity();
-  for (int pass = 0; pass < 2; ++pass) {
-    const auto p = pass == 0 ? a : b;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const Vec2 e = p[(i + 1) % p.size()] - p[i];
-      Vec2 u = Vec2(e.y(), -e.x()).normalized();
-      if (pass == 1) u = -u;
-      Real hi_a = -std::numeric_limits<Real>::infinity();
-      Real lo_b = std::numeric_limits<Real>::infinity();
-      for (const Vec2& v : a) hi_a = std::max(hi_a, v.dot(u));
-      for (const Vec2& v : b) lo_b = std::min(lo_b, v.dot(u));
-      best = std::min(best, hi_a - lo_b);
-    }
-  }
-  return best;
 }
 
 }  // namespace mink_test

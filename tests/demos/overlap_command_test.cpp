@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <random>
@@ -11,7 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "commands.hpp"
+#include "brute_force_support.hpp"
+#include "cli_test_support.hpp"
 #include "exact_overlap_oracle.hpp"
 
 #ifndef MINK_BINARY
@@ -118,7 +118,7 @@ void check_answer(const Query& q, const json& out, std::size_t index, Checked& c
   if (overlap) {
     ++checked.overlapping;
     EXPECT_EQ(distance, 0);
-    const Real expected = scan_depth(ha, hb);
+    const Real expected = brute_depth(ha, hb).depth;
     EXPECT_NEAR(depth, expected, tolerance(expected));
     // The normal undoes the penetration: b moved by the depth (and a hair) is apart.
     std::vector<Vec2> moved = hb;
@@ -137,15 +137,6 @@ void check_answer(const Query& q, const json& out, std::size_t index, Checked& c
   }
 }
 
-std::string run_in_process(const std::string& input, int& code, const std::string& file = "-") {
-  std::istringstream in(input);
-  std::ostringstream out;
-  std::ostringstream err;
-  const char* argv[] = {"mink", "overlap", file.c_str()};
-  code = mink::cli::run(3, argv, {in, out, err});
-  return out.str();
-}
-
 std::vector<json> parse_lines(const std::string& text) {
   std::vector<json> lines;
   std::istringstream stream(text);
@@ -158,9 +149,9 @@ TEST(OverlapCommand, HeldOutPairsAgainstTheExactOracle) {
   const std::vector<Query> queries = held_out_queries(0x5eedc0de, kPairs);
   std::string input;
   for (const Query& q : queries) input += to_line(q) + "\n";
-  int code = -1;
-  const std::vector<json> out = parse_lines(run_in_process(input, code));
-  EXPECT_EQ(code, 0);
+  const CliResult r = run_cli({"overlap", "-"}, input);
+  const std::vector<json> out = parse_lines(r.out);
+  EXPECT_EQ(r.code, 0);
   ASSERT_EQ(out.size(), queries.size());
   Checked checked;
   for (std::size_t i = 0; i < queries.size(); ++i) check_answer(queries[i], out[i], i, checked);
@@ -169,13 +160,13 @@ TEST(OverlapCommand, HeldOutPairsAgainstTheExactOracle) {
 }
 
 TEST(OverlapCommand, TouchingIsOverlapWithZeroDepth) {
-  int code = -1;
-  const auto out = parse_lines(run_in_process(
-      "{\"a\": [[0,0],[1,0],[1,1],[0,1]], \"b\": [[1,1],[2,1],[2,2],[1,2]]}\n"
-      "{\"a\": [[0,0],[1,0],[1,1],[0,1]], \"b\": [[1,0.5],[2,0.5],[2,2]]}\n"
-      "{\"a\": [[0,0],[1,0],[1,1],[0,1]], \"b\": [[1.0000000000000002,0],[2,0],[2,1]]}\n",
-      code));
-  EXPECT_EQ(code, 0);
+  const CliResult r =
+      run_cli({"overlap", "-"},
+              "{\"a\": [[0,0],[1,0],[1,1],[0,1]], \"b\": [[1,1],[2,1],[2,2],[1,2]]}\n"
+              "{\"a\": [[0,0],[1,0],[1,1],[0,1]], \"b\": [[1,0.5],[2,0.5],[2,2]]}\n"
+              "{\"a\": [[0,0],[1,0],[1,1],[0,1]], \"b\": [[1.0000000000000002,0],[2,0],[2,1]]}\n");
+  const auto out = parse_lines(r.out);
+  EXPECT_EQ(r.code, 0);
   ASSERT_EQ(out.size(), 3u);
   EXPECT_TRUE(out[0]["overlap"].get<bool>());
   EXPECT_EQ(out[0]["depth"].get<Real>(), 0);
@@ -186,19 +177,18 @@ TEST(OverlapCommand, TouchingIsOverlapWithZeroDepth) {
 }
 
 TEST(OverlapCommand, BadLinesAreReportedAndTheRestAnswered) {
-  int code = -1;
-  const auto out = parse_lines(
-      run_in_process("{\"a\": [[0,0],[1,0],[0,1]], \"b\": [[3,0],[4,0],[3,1]]}\n"
-                     "not json\n"
-                     "\n"
-                     "{\"a\": [[0,0],[1,0],[2,0]], \"b\": [[3,0],[4,0],[3,1]]}\n"
-                     "{\"a\": [[0,0],[1,0],[0,1]]}\n"
-                     "{\"a\": [[0,0],[1,0],[0,\"x\"]], \"b\": [[3,0],[4,0],[3,1]]}\n"
-                     "{\"a\": [[0,0],[1,0],[0,1]], \"b\": [[3,0],[4,0],[3,1]], \"c\": 1}\n"
-                     "[1, 2]\n"
-                     "{\"a\": [[0,0],[1,0],[0,1]], \"b\": [[0,0],[1,0],[0,1]]}\n",
-                     code));
-  EXPECT_EQ(code, 2);
+  const CliResult r = run_cli({"overlap", "-"},
+                              "{\"a\": [[0,0],[1,0],[0,1]], \"b\": [[3,0],[4,0],[3,1]]}\n"
+                              "not json\n"
+                              "\n"
+                              "{\"a\": [[0,0],[1,0],[2,0]], \"b\": [[3,0],[4,0],[3,1]]}\n"
+                              "{\"a\": [[0,0],[1,0],[0,1]]}\n"
+                              "{\"a\": [[0,0],[1,0],[0,\"x\"]], \"b\": [[3,0],[4,0],[3,1]]}\n"
+                              "{\"a\": [[0,0],[1,0],[0,1]], \"b\": [[3,0],[4,0],[3,1]], \"c\": 1}\n"
+                              "[1, 2]\n"
+                              "{\"a\": [[0,0],[1,0],[0,1]], \"b\": [[0,0],[1,0],[0,1]]}\n");
+  const auto out = parse_lines(r.out);
+  EXPECT_EQ(r.code, 2);
   ASSERT_EQ(out.size(), 8u);
   EXPECT_FALSE(out[0]["overlap"].get<bool>());
   EXPECT_EQ(out[0]["distance"].get<Real>(), 2);
@@ -219,32 +209,25 @@ TEST(OverlapCommand, BadLinesAreReportedAndTheRestAnswered) {
 }
 
 TEST(OverlapCommand, UnreadableFileIsBadInput) {
-  int code = -1;
-  run_in_process("", code, "/nonexistent/queries.jsonl");
-  EXPECT_EQ(code, 2);
+  const CliResult r = run_cli({"overlap", "/nonexistent/queries.jsonl"});
+  EXPECT_EQ(r.code, 2);
 }
 
 // The real binary, reading a file: same answers, same exit code.
 TEST(OverlapCommand, RealProcessReadsAFile) {
   const std::vector<Query> queries = held_out_queries(0xfeedbeef, 200);
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("mink_overlap_" + std::to_string(std::random_device{}()));
-  std::filesystem::create_directories(dir);
+  const auto dir = fresh_dir("overlap_" + std::to_string(std::random_device{}()));
   const auto input = dir / "queries.jsonl";
   const auto output = dir / "answers.jsonl";
-  {
-    std::ofstream file(input);
-    for (const Query& q : queries) file << to_line(q) << "\n";
-  }
+  std::string lines;
+  for (const Query& q : queries) lines += to_line(q) + "\n";
+  write_text(input, lines);
   const std::string command =
       std::string(MINK_BINARY) + " overlap '" + input.string() + "' > '" + output.string() + "'";
   const int status = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0);
-  std::ifstream file(output);
-  std::stringstream text;
-  text << file.rdbuf();
-  const std::vector<json> out = parse_lines(text.str());
+  const std::vector<json> out = parse_lines(read_text(output));
   ASSERT_EQ(out.size(), queries.size());
   Checked checked;
   for (std::size_t i = 0; i < queries.size(); ++i) check_answer(queries[i], out[i], i, checked);

@@ -4,9 +4,9 @@
 #include <cstdlib>
 #include <string>
 
+#include "cli_test_support.hpp"
 #include "mink/engine/world.hpp"
 #include "scene_file.hpp"
-#include "scene_test_support.hpp"
 
 namespace {
 

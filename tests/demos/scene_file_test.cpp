@@ -2,9 +2,9 @@
 
 #include <string>
 
+#include "cli_test_support.hpp"
 #include "mink/engine/world.hpp"
 #include "scene_file.hpp"
-#include "scene_test_support.hpp"
 
 namespace {
 

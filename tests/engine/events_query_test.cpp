@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "mink/engine/scene.hpp"
@@ -15,14 +16,10 @@ namespace {
 using test::add_box;
 using test::add_ground;
 
-bool has_pair(std::span<const ContactBeginEvent> events, ShapeId a, ShapeId b) {
-  return std::any_of(events.begin(), events.end(), [&](const ContactBeginEvent& e) {
-    return (e.shape_a == a && e.shape_b == b) || (e.shape_a == b && e.shape_b == a);
-  });
-}
-
-bool has_pair(std::span<const ContactEndEvent> events, ShapeId a, ShapeId b) {
-  return std::any_of(events.begin(), events.end(), [&](const ContactEndEvent& e) {
+// Begin or end events alike: whether one names the pair, in either order.
+template <typename Event>
+bool has_pair(std::span<const Event> events, ShapeId a, ShapeId b) {
+  return std::any_of(events.begin(), events.end(), [&](const Event& e) {
     return (e.shape_a == a && e.shape_b == b) || (e.shape_a == b && e.shape_b == a);
   });
 }

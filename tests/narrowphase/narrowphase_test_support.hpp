@@ -1,19 +1,18 @@
 #pragma once
 
 // Shared by the narrowphase tests: random posed hulls and brute-force answers computed from
-// world vertices alone, with none of the library's search structures.
+// world vertices alone, with none of the library's search structures (the library-independent
+// scans are in brute_force_support.hpp).
 
-#include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <limits>
 #include <numbers>
 #include <random>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "brute_force_support.hpp"
 #include "mink/geometry/convex_hull.hpp"
 #include "mink/geometry/point_sets.hpp"
 #include "mink/narrowphase/gjk_distance.hpp"
@@ -87,43 +86,9 @@ inline RandomPair random_pair(std::mt19937_64& rng, std::size_t na, std::size_t 
   return {std::move(a), std::move(b), pa, pb, std::move(wa), std::move(wb)};
 }
 
-inline Real point_segment_distance(const Vec2& p, const Vec2& s0, const Vec2& s1) {
-  const Vec2 e = s1 - s0;
-  const Real len2 = e.squaredNorm();
-  const Real t = len2 > 0 ? std::clamp((p - s0).dot(e) / len2, Real(0), Real(1)) : 0;
-  return (p - (s0 + t * e)).norm();
-}
-
 // Distance between two disjoint convex polygons by the library's slow twin (a plain scan).
 inline Real brute_distance(std::span<const Vec2> a, std::span<const Vec2> b) {
   return mink::hull_distance_brute(a, b).distance;
-}
-
-struct BruteDepth {
-  Real depth;
-  Vec2 normal;  // from a towards b
-};
-
-// Penetration depth of overlapping convex polygons: the cheapest direction to push b out,
-// among the edge normals of both (the only candidates in 2D), scanning every vertex.
-inline BruteDepth brute_depth(std::span<const Vec2> a, std::span<const Vec2> b) {
-  BruteDepth best{std::numeric_limits<Real>::infinity(), Vec2(0, 0)};
-  auto extent = [](std::span<const Vec2> p, const Vec2& u) {
-    Real hi = -std::numeric_limits<Real>::infinity();
-    for (const Vec2& v : p) hi = std::max(hi, v.dot(u));
-    return hi;
-  };
-  for (int pass = 0; pass < 2; ++pass) {
-    const std::span<const Vec2> p = pass == 0 ? a : b;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      const Vec2 e = p[(i + 1) % p.size()] - p[i];
-      Vec2 u = Vec2(e.y(), -e.x()).normalized();  // outward normal of p's edge
-      if (pass == 1) u = -u;                      // b's outward normal points from b to a
-      const Real push = extent(a, u) + extent(b, -u);
-      if (push < best.depth) best = {push, u};
-    }
-  }
-  return best;
 }
 
 inline std::vector<Vec2> translated(std::span<const Vec2> p, const Vec2& by) {

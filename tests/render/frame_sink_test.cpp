@@ -8,12 +8,11 @@
 #include "mink/error.hpp"
 #include "mink/render/png_file.hpp"
 #include "mink/render/render_error.hpp"
+#include "render_test_support.hpp"
 
 namespace {
 
-std::filesystem::path temp_path(const std::string& name) {
-  return std::filesystem::path(testing::TempDir()) / name;
-}
+using mink_test::temp_path;
 
 mink::Image shade(int width, int height, std::uint8_t value) {
   mink::Image image(width, height, 3);

@@ -76,11 +76,7 @@ TEST_P(GjkFigure, OriginMarkerInsideTheDifferenceExactlyWhenTheHullsOverlap) {
       EXPECT_GT(ring.fill, ring.samples * 3 / 4);
     }
     // The difference really is drawn: its fill covers a good part of the frame.
-    int fill = 0;
-    for (int y = 0; y < image.height; ++y) {
-      for (int x = 0; x < image.width; ++x)
-        fill += image.at(x, y) == to_rgba(mink::cli::kDifferenceFill);
-    }
+    const int fill = mink_test::count_pixels(image, to_rgba(mink::cli::kDifferenceFill));
     EXPECT_GT(fill, image.width * image.height / 20);
   }
 }

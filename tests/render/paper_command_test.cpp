@@ -4,51 +4,31 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <sstream>
 #include <string>
-#include <vector>
 
-#include "commands.hpp"
+#include "cli_test_support.hpp"
 #include "mink/render/png_file.hpp"
+#include "render_test_support.hpp"
 
 namespace {
 
-struct Result {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-Result run(std::vector<std::string> arguments) {
-  arguments.insert(arguments.begin(), "mink");
-  std::vector<const char*> argv;
-  for (const std::string& a : arguments) argv.push_back(a.c_str());
-  std::istringstream in;
-  std::ostringstream out;
-  std::ostringstream err;
-  const int code = mink::cli::run(static_cast<int>(argv.size()), argv.data(), {in, out, err});
-  return {code, out.str(), err.str()};
-}
+using mink_test::CliResult;
+using mink_test::count_pixels;
+using mink_test::Rgb;
+using mink_test::run_cli;
 
 // Pixels of exactly this colour in columns [x0, x1).
-int count(const mink::Image& image, std::array<std::uint8_t, 3> rgb, int x0, int x1) {
-  int found = 0;
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = x0; x < x1; ++x) {
-      const auto p = image.at(x, y);
-      found += p[0] == rgb[0] && p[1] == rgb[1] && p[2] == rgb[2];
-    }
-  }
-  return found;
+int count(const mink::Image& image, Rgb rgb, int x0, int x1) {
+  return count_pixels(image, rgb, {x0, 0, x1, image.height});
 }
 
 class PaperCommand : public testing::TestWithParam<std::string> {};
 
 TEST_P(PaperCommand, WritesTheFiveFigures) {
-  const auto dir = std::filesystem::path(testing::TempDir()) / ("mink_paper_" + GetParam());
+  const auto dir = mink_test::temp_path("mink_paper_" + GetParam());
   std::filesystem::remove_all(dir);
-  const Result result =
-      run({"paper", "--out", dir.string(), "--gl", GetParam(), "--size", "480x300"});
+  const CliResult result =
+      run_cli({"paper", "--out", dir.string(), "--gl", GetParam(), "--size", "480x300"});
   ASSERT_EQ(result.code, 0) << result.err;
   for (const char* name : {"fig08_point_sets.png", "fig09_chan.png", "fig10_divide_conquer.png",
                            "fig12_gjk_verdict.png", "fig13_minkowski_difference.png"}) {
@@ -59,8 +39,8 @@ TEST_P(PaperCommand, WritesTheFiveFigures) {
   }
   // Figure 8: set A's blue on the left panel only, set B's orange on the right only.
   const mink::Image fig8 = mink::read_png(dir / "fig08_point_sets.png");
-  const std::array<std::uint8_t, 3> blue = {33, 102, 204};
-  const std::array<std::uint8_t, 3> orange = {217, 102, 13};
+  const Rgb blue = {33, 102, 204};
+  const Rgb orange = {217, 102, 13};
   EXPECT_GT(count(fig8, blue, 0, 240), 100);
   EXPECT_EQ(count(fig8, blue, 240, 480), 0);
   EXPECT_GT(count(fig8, orange, 240, 480), 100);
@@ -86,14 +66,14 @@ INSTANTIATE_TEST_SUITE_P(Backends, PaperCommand, testing::Values("osmesa", "egl"
                          });
 
 TEST(PaperCommandErrors, NameTheBadOption) {
-  const auto dir = std::filesystem::path(testing::TempDir()) / "mink_paper_bad";
-  Result result = run({"paper", "--out", dir.string(), "--gl", "vulkan"});
+  const auto dir = mink_test::temp_path("mink_paper_bad");
+  CliResult result = run_cli({"paper", "--out", dir.string(), "--gl", "vulkan"});
   EXPECT_EQ(result.code, 2);
   EXPECT_NE(result.err.find("vulkan"), std::string::npos);
-  result = run({"paper", "--out", dir.string(), "--size", "big"});
+  result = run_cli({"paper", "--out", dir.string(), "--size", "big"});
   EXPECT_EQ(result.code, 2);
   EXPECT_NE(result.err.find("big"), std::string::npos);
-  result = run({"paper", "--out", dir.string(), "--size", "10x10"});
+  result = run_cli({"paper", "--out", dir.string(), "--size", "10x10"});
   EXPECT_EQ(result.code, 2);
   EXPECT_FALSE(std::filesystem::exists(dir / "fig08_point_sets.png"));
 }

@@ -7,12 +7,11 @@
 
 #include "mink/error.hpp"
 #include "mink/render/render_error.hpp"
+#include "render_test_support.hpp"
 
 namespace {
 
-std::filesystem::path temp_file(const std::string& name) {
-  return std::filesystem::path(testing::TempDir()) / name;
-}
+using mink_test::temp_path;
 
 mink::Image pattern(int width, int height, int channels) {
   mink::Image image(width, height, channels);
@@ -24,7 +23,7 @@ mink::Image pattern(int width, int height, int channels) {
 
 TEST(PngFile, RgbaRoundTripsExactly) {
   const mink::Image image = pattern(37, 21, 4);
-  const auto path = temp_file("mink_rgba.png");
+  const auto path = temp_path("mink_rgba.png");
   mink::write_png(path, image);
   const mink::Image read = mink::read_png(path);
   std::filesystem::remove(path);
@@ -33,7 +32,7 @@ TEST(PngFile, RgbaRoundTripsExactly) {
 
 TEST(PngFile, RgbReadsBackOpaque) {
   const mink::Image image = pattern(8, 5, 3);
-  const auto path = temp_file("mink_rgb.png");
+  const auto path = temp_path("mink_rgb.png");
   mink::write_png(path, image);
   const mink::Image read = mink::read_png(path);
   std::filesystem::remove(path);
@@ -53,14 +52,14 @@ TEST(PngFile, ReportsFilesItCannotWriteOrRead) {
   } catch (const mink::OutputError& error) {
     EXPECT_NE(std::string(error.what()).find("/nonexistent-directory/out.png"), std::string::npos);
   }
-  EXPECT_THROW(mink::read_png(temp_file("mink_missing.png")), mink::OutputError);
-  const auto not_png = temp_file("mink_not.png");
+  EXPECT_THROW(mink::read_png(temp_path("mink_missing.png")), mink::OutputError);
+  const auto not_png = temp_path("mink_not.png");
   std::ofstream(not_png) << "plain text";
   EXPECT_THROW(mink::read_png(not_png), mink::OutputError);
   std::filesystem::remove(not_png);
   mink::Image broken = image;
   broken.pixels.pop_back();
-  EXPECT_THROW(mink::write_png(temp_file("mink_broken.png"), broken), mink::InvalidArgumentError);
+  EXPECT_THROW(mink::write_png(temp_path("mink_broken.png"), broken), mink::InvalidArgumentError);
 }
 
 }  // namespace

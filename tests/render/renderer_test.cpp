@@ -102,8 +102,8 @@ TEST_P(RendererTest, SomethingAtTheTopOfTheWorldIsInTheTopRowsOfTheImageAndPng) 
   for (int y : {0, 5, 9}) EXPECT_EQ(image.at(80, y), to_rgba(kRed)) << "row " << y;
   for (int y : {10, 60, 119}) EXPECT_EQ(image.at(80, y), to_rgba(kBackground)) << "row " << y;
   // And the PNG keeps that order.
-  const auto path = std::filesystem::path(testing::TempDir()) /
-                    ("mink_row_order_" + std::string(mink::to_string(GetParam())) + ".png");
+  const auto path =
+      mink_test::temp_path("mink_row_order_" + std::string(mink::to_string(GetParam())) + ".png");
   mink::write_png(path, image);
   const mink::Image read = mink::read_png(path);
   std::filesystem::remove(path);

@@ -4,17 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <vector>
 
-#include "commands.hpp"
+#include "cli_test_support.hpp"
 #include "mink/render/png_file.hpp"
+#include "render_test_support.hpp"
 
 namespace {
 
-using Rgb = std::array<std::uint8_t, 3>;
+using mink_test::count_pixels;
+using mink_test::Rgb;
 
 // World::draw's colours: an awake dynamic body, and an AABB outline.
 constexpr Rgb kDynamic{230, 179, 179};
@@ -25,33 +24,17 @@ Rgb rgb(const mink::Image& image, int x, int y) {
   return {p[0], p[1], p[2]};
 }
 
-int count(const mink::Image& image, Rgb colour) {
-  int found = 0;
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < image.width; ++x) found += rgb(image, x, y) == colour;
-  }
-  return found;
-}
-
 // Runs `mink sandbox pyramid` at 640 x 480 with the script and returns its screenshot.
 mink::Image shoot(const std::string& name, const std::string& script) {
-  const auto dir = std::filesystem::path(testing::TempDir());
-  const auto script_file = dir / ("mink_sandbox_" + name + ".txt");
-  const auto shot = dir / ("mink_sandbox_" + name + ".png");
-  std::ofstream(script_file) << script;
+  const auto script_file = mink_test::temp_path("mink_sandbox_" + name + ".txt");
+  const auto shot = mink_test::temp_path("mink_sandbox_" + name + ".png");
+  mink_test::write_text(script_file, script);
   std::filesystem::remove(shot);
-  const std::vector<std::string> arguments = {
-      "mink",         "sandbox",     "pyramid", "--script", script_file.string(),
-      "--screenshot", shot.string(), "--width", "640",      "--height",
-      "480"};
-  std::vector<const char*> argv;
-  for (const std::string& a : arguments) argv.push_back(a.c_str());
-  std::istringstream in;
-  std::ostringstream out;
-  std::ostringstream err;
-  const int code = mink::cli::run(static_cast<int>(argv.size()), argv.data(), {in, out, err});
-  EXPECT_EQ(code, 0) << err.str();
-  EXPECT_NE(out.str().find("wrote"), std::string::npos) << out.str();
+  const mink_test::CliResult result =
+      mink_test::run_cli({"sandbox", "pyramid", "--script", script_file.string(), "--screenshot",
+                          shot.string(), "--width", "640", "--height", "480"});
+  EXPECT_EQ(result.code, 0) << result.err;
+  EXPECT_NE(result.out.find("wrote"), std::string::npos) << result.out;
   std::filesystem::remove(script_file);
   mink::Image image = mink::read_png(shot);
   std::filesystem::remove(shot);
@@ -63,9 +46,9 @@ TEST(SandboxWindow, ScriptedDropStepAndLayerToggle) {
   const mink::Image before = shoot("before", "0 key space\n0.2 screenshot\n0.25 quit\n");
   ASSERT_EQ(before.width, 640);
   ASSERT_EQ(before.height, 480);
-  EXPECT_NE(rgb(before, 320, 110), kDynamic);  // empty space above the pyramid
-  EXPECT_GT(count(before, kDynamic), 1000);    // the pyramid's boxes
-  EXPECT_EQ(count(before, kAabb), 0);
+  EXPECT_NE(rgb(before, 320, 110), kDynamic);       // empty space above the pyramid
+  EXPECT_GT(count_pixels(before, kDynamic), 1000);  // the pyramid's boxes
+  EXPECT_EQ(count_pixels(before, kAabb), 0);
 
   const mink::Image dropped = shoot("dropped",
                                     "0 key space\n"
@@ -75,11 +58,11 @@ TEST(SandboxWindow, ScriptedDropStepAndLayerToggle) {
                                     "0.3 screenshot\n"
                                     "0.35 quit\n");
   EXPECT_EQ(rgb(dropped, 320, 110), kDynamic);  // the dropped hull, where the click was
-  EXPECT_EQ(count(dropped, kAabb), 0);
+  EXPECT_EQ(count_pixels(dropped, kAabb), 0);
 
   const mink::Image toggled =
       shoot("toggled", "0 key space\n0.1 key 2\n0.2 screenshot\n0.25 quit\n");
-  EXPECT_GT(count(toggled, kAabb), 500);  // key 2 turned the AABB layer on
+  EXPECT_GT(count_pixels(toggled, kAabb), 500);  // key 2 turned the AABB layer on
 }
 
 }  // namespace

@@ -14,11 +14,14 @@
 #include "mink/error.hpp"
 #include "mink/render/png_file.hpp"
 #include "mink/render/renderer.hpp"
+#include "render_test_support.hpp"
 
 namespace {
 
 using mink::Color;
 using mink::Vec2;
+using mink_test::count_pixels;
+using mink_test::to_rgba;
 
 constexpr Color kBackground{0.2f, 0.4f, 0.6f, 1};
 constexpr Color kRed{1, 0, 0, 1};
@@ -35,7 +38,7 @@ TEST(SdlWindow, ScriptedScreenshotOfAStaticDrawing) {
   ASSERT_EQ(window.height(), 240);
   mink::Renderer renderer(window);
   renderer.camera().fit(Vec2(0, 0), Vec2(32, 24), 0);
-  const auto path = std::filesystem::path(testing::TempDir()) / "mink_window_screenshot.png";
+  const auto path = mink_test::temp_path("mink_window_screenshot.png");
   std::filesystem::remove(path);
   mink::ScriptPlayer player(parse("0.25 screenshot\n0.5 quit\n"));
   bool quit = false;
@@ -63,19 +66,11 @@ TEST(SdlWindow, ScriptedScreenshotOfAStaticDrawing) {
   std::filesystem::remove(path);
   ASSERT_EQ(shot.width, 320);
   ASSERT_EQ(shot.height, 240);
-  const auto rgba = [](Color c) {
-    return std::array<std::uint8_t, 4>{static_cast<std::uint8_t>(c.r * 255 + 0.5f),
-                                       static_cast<std::uint8_t>(c.g * 255 + 0.5f),
-                                       static_cast<std::uint8_t>(c.b * 255 + 0.5f), 255};
-  };
   // The square's centre (8, 18) is pixel (80, 60); the far corner is background; the
   // overlay's text is at the top left.
-  EXPECT_EQ(shot.at(80, 60), rgba(kRed));
-  EXPECT_EQ(shot.at(300, 220), rgba(kBackground));
-  int white = 0;
-  for (int y = 0; y < 30; ++y) {
-    for (int x = 0; x < 150; ++x) white += shot.at(x, y) == rgba(kWhite);
-  }
+  EXPECT_EQ(shot.at(80, 60), to_rgba(kRed));
+  EXPECT_EQ(shot.at(300, 220), to_rgba(kBackground));
+  const int white = count_pixels(shot, to_rgba(kWhite), {0, 0, 150, 30});
   EXPECT_GT(white, 50);
 }
 

@@ -13,10 +13,7 @@
 namespace {
 
 using mink::Vec2;
-
-std::filesystem::path temp_file(const std::string& name) {
-  return std::filesystem::path(testing::TempDir()) / name;
-}
+using mink_test::temp_path;
 
 mink::VideoOptions options(int fps, std::string codec, std::string ffmpeg = "ffmpeg") {
   mink::VideoOptions options;
@@ -45,7 +42,7 @@ std::string probe(const std::filesystem::path& video, const std::string& entry) 
 class VideoWriterTest : public testing::TestWithParam<std::string> {};
 
 TEST_P(VideoWriterTest, WritesEveryRenderedFrame) {
-  const auto path = temp_file("mink_frames_" + GetParam() + ".mp4");
+  const auto path = temp_path("mink_frames_" + GetParam() + ".mp4");
   mink_test::Headless frame(mink::GlBackend::osmesa, 96, 64);
   mink::Renderer& r = *frame.renderer;
   r.camera().fit(Vec2(0, 0), Vec2(24, 16), 0);
@@ -81,7 +78,7 @@ INSTANTIATE_TEST_SUITE_P(Codecs, VideoWriterTest, testing::Values("libx264", "mp
 TEST(VideoWriter, PicksAnEncoderThisFfmpegHas) {
   EXPECT_TRUE(mink::ffmpeg_has_encoder("ffmpeg", "mpeg4"));
   EXPECT_FALSE(mink::ffmpeg_has_encoder("ffmpeg", "no-such-encoder"));
-  const auto path = temp_file("mink_default_codec.mp4");
+  const auto path = temp_path("mink_default_codec.mp4");
   mink::VideoWriter video(path, 16, 16);
   EXPECT_EQ(video.codec(), mink::ffmpeg_has_encoder("ffmpeg", "libx264") ? "libx264" : "mpeg4");
   video.write_frame(mink::Image(16, 16, 3));
@@ -91,7 +88,7 @@ TEST(VideoWriter, PicksAnEncoderThisFfmpegHas) {
 
 TEST(VideoWriter, AMissingFfmpegIsAnOutputError) {
   try {
-    mink::VideoWriter video(temp_file("mink_never.mp4"), 16, 16,
+    mink::VideoWriter video(temp_path("mink_never.mp4"), 16, 16,
                             options(60, "mpeg4", "/nonexistent/ffmpeg"));
     FAIL() << "started a missing program";
   } catch (const mink::OutputError& error) {
@@ -102,7 +99,7 @@ TEST(VideoWriter, AMissingFfmpegIsAnOutputError) {
 TEST(VideoWriter, FfmpegFailuresSurfaceWithItsMessage) {
   // An unknown encoder: ffmpeg exits at once; the error arrives on a write or on close.
   const auto run = [] {
-    mink::VideoWriter video(temp_file("mink_bad_codec.mp4"), 16, 16,
+    mink::VideoWriter video(temp_path("mink_bad_codec.mp4"), 16, 16,
                             options(60, "no-such-encoder"));
     const mink::Image frame(16, 16, 3);
     for (int i = 0; i < 200; ++i) video.write_frame(frame);
@@ -121,15 +118,15 @@ TEST(VideoWriter, FfmpegFailuresSurfaceWithItsMessage) {
 }
 
 TEST(VideoWriter, RejectsSizesAndFramesThatDoNotFit) {
-  EXPECT_THROW(mink::VideoWriter(temp_file("x.mp4"), 15, 16), mink::InvalidArgumentError);
-  EXPECT_THROW(mink::VideoWriter(temp_file("x.mp4"), 16, 16, options(0, "mpeg4")),
+  EXPECT_THROW(mink::VideoWriter(temp_path("x.mp4"), 15, 16), mink::InvalidArgumentError);
+  EXPECT_THROW(mink::VideoWriter(temp_path("x.mp4"), 16, 16, options(0, "mpeg4")),
                mink::InvalidArgumentError);
-  mink::VideoWriter video(temp_file("mink_size.mp4"), 16, 16, options(60, "mpeg4"));
+  mink::VideoWriter video(temp_path("mink_size.mp4"), 16, 16, options(60, "mpeg4"));
   EXPECT_THROW(video.write_frame(mink::Image(16, 18, 3)), mink::InvalidArgumentError);
   video.write_frame(mink::Image(16, 16, 4));
   video.close();
   EXPECT_THROW(video.write_frame(mink::Image(16, 16, 3)), mink::OutputError);
-  std::filesystem::remove(temp_file("mink_size.mp4"));
+  std::filesystem::remove(temp_path("mink_size.mp4"));
 }
 
 }  // namespace

@@ -1,5 +1,8 @@
 #pragma once
 
+// Shared by the tests of the `mink` commands: the command run in-process, and scratch files.
+// Only the command's own header: no CGAL or GoogleTest, so any test target can use it.
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -16,12 +19,12 @@ struct CliResult {
   std::string err;
 };
 
-// `mink ARGS...` in-process.
-inline CliResult run_cli(std::vector<std::string> args) {
+// `mink ARGS...` in-process, reading `input` as its standard input.
+inline CliResult run_cli(std::vector<std::string> args, const std::string& input = "") {
   args.insert(args.begin(), "mink");
   std::vector<const char*> argv;
   for (const std::string& a : args) argv.push_back(a.c_str());
-  std::istringstream in;
+  std::istringstream in(input);
   std::ostringstream out;
   std::ostringstream err;
   const int code = mink::cli::run(static_cast<int>(argv.size()), argv.data(), {in, out, err});
