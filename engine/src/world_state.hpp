@@ -60,7 +60,7 @@ struct Shape {
 // pose of B in A's frame, the normal in A's frame, each point's surface points in their own
 // body's frame.
 struct ManifoldCache {
-  Real cos = 1, sin = 0, x = 0, y = 0;
+  Pose relative;
   Vec2 normal{0, 0};
   Vec2 on_a[2] = {Vec2(0, 0), Vec2(0, 0)};
   Vec2 on_b[2] = {Vec2(0, 0), Vec2(0, 0)};

@@ -128,18 +128,16 @@ void WorldState::collide() {
     const Shape& shape_b = shapes[c.shape_b];
     const bool was_touching = c.touching;
     const Pose pose_a = body_a.pose(), pose_b = body_b.pose();
-    // B's pose in A's frame.
     const Rotation& ra = pose_a.rotation;
-    const Rotation& rb = pose_b.rotation;
-    const Real rel_cos = ra.cos * rb.cos + ra.sin * rb.sin;
-    const Real rel_sin = ra.cos * rb.sin - ra.sin * rb.cos;
-    const Vec2 rel_position = ra.apply_inverse(pose_b.position - pose_a.position);
+    const Pose relative = relative_pose(pose_a, pose_b);
     detail::ManifoldCache& cache = c.cache;
     bool same_features = false;
     if (reuse && cache.valid) {
-      const Real turn = std::abs(cache.cos * rel_sin - cache.sin * rel_cos);  // sin of the change
-      const Real shift =
-          std::abs(rel_position.x() - cache.x) + std::abs(rel_position.y() - cache.y);
+      const Rotation& then = cache.relative.rotation;
+      const Rotation& now = relative.rotation;
+      const Real turn = std::abs(then.cos * now.sin - then.sin * now.cos);  // sin of the change
+      const Vec2 moved = relative.position - cache.relative.position;
+      const Real shift = std::abs(moved.x()) + std::abs(moved.y());
       same_features = shift + turn * (body_a.extent + body_b.extent) < reuse_tolerance;
     }
 
@@ -170,10 +168,7 @@ void WorldState::collide() {
       }
       cache.valid = c.manifold.point_count > 0;
       if (cache.valid) {
-        cache.cos = rel_cos;
-        cache.sin = rel_sin;
-        cache.x = rel_position.x();
-        cache.y = rel_position.y();
+        cache.relative = relative;
         const Vec2 normal = c.manifold.normal;
         cache.normal = ra.apply_inverse(normal);
         for (int j = 0; j < c.manifold.point_count; ++j) {

@@ -80,7 +80,7 @@ std::uint32_t incident_edge(const PreparedHull& incident, const Vec2& normal) {
 Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b,
                        const Pose& pose_b, Real speculative_distance) {
   Manifold manifold;
-  const Pose b_to_a = detail::PairFrame::relative_pose(pose_a, pose_b);
+  const Pose b_to_a = relative_pose(pose_a, pose_b);
   const detail::FaceSeparation on_a = detail::max_face_separation(a, b, b_to_a);
   if (on_a.separation > speculative_distance) return manifold;
   const Pose a_to_b = detail::inverse(b_to_a);

@@ -30,7 +30,7 @@ class PairFrame {
  public:
   PairFrame(const PreparedHull& a, const Pose& pose_a, const PreparedHull& b, const Pose& pose_b)
       : a_(a), b_(b), pose_a_(pose_a) {
-    relative_ = relative_pose(pose_a, pose_b);
+    relative_ = mink::relative_pose(pose_a, pose_b);
 #if defined(__SSE2__)
     if (b.padded_size() == kSupportBlock) {
       // A small B is mapped into A's frame once, so each support of B in the loops is a plain
@@ -47,16 +47,6 @@ class PairFrame {
       a_block_ = a.padded_size() == kSupportBlock;
     }
 #endif
-  }
-
-  // B's local frame to A's, for two posed hulls.
-  static Pose relative_pose(const Pose& pose_a, const Pose& pose_b) {
-    const Rotation& ra = pose_a.rotation;
-    const Rotation& rb = pose_b.rotation;
-    Pose relative;
-    relative.rotation = {ra.cos * rb.cos + ra.sin * rb.sin, ra.cos * rb.sin - ra.sin * rb.cos};
-    relative.position = ra.apply_inverse(pose_b.position - pose_a.position);
-    return relative;
   }
 
   const PreparedHull& a() const noexcept {

@@ -11,7 +11,7 @@ namespace mink {
 
 PenetrationResult penetration_by_faces(const PreparedHull& a, const Pose& pose_a,
                                        const PreparedHull& b, const Pose& pose_b) {
-  const Pose b_to_a = detail::PairFrame::relative_pose(pose_a, pose_b);
+  const Pose b_to_a = relative_pose(pose_a, pose_b);
   const Pose a_to_b = detail::inverse(b_to_a);
   const detail::FaceSeparation on_a = detail::max_face_separation(a, b, b_to_a);
   const detail::FaceSeparation on_b = detail::max_face_separation(b, a, a_to_b);

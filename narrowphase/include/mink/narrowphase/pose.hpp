@@ -36,4 +36,14 @@ struct Pose {
   Vec2 apply_inverse(const Vec2& world) const { return rotation.apply_inverse(world - position); }
 };
 
+/// @brief B's pose in A's frame: A's pose applied after it gives B's, up to rounding.
+inline Pose relative_pose(const Pose& a, const Pose& b) {
+  const Rotation& ra = a.rotation;
+  const Rotation& rb = b.rotation;
+  Pose relative;
+  relative.rotation = {ra.cos * rb.cos + ra.sin * rb.sin, ra.cos * rb.sin - ra.sin * rb.cos};
+  relative.position = ra.apply_inverse(b.position - a.position);
+  return relative;
+}
+
 }  // namespace mink
