@@ -6,10 +6,10 @@
 
 #include "box2d_distance.hpp"
 #include "box2d_scene.hpp"
+#include "gjk_crosscheck.hpp"
 #include "mink/error.hpp"
 #include "mink/narrowphase/gjk_distance.hpp"
 #include "mink/narrowphase/gjk_overlap.hpp"
-#include "mink/narrowphase/penetration.hpp"
 #include "mink/narrowphase/prepared_hull.hpp"
 
 namespace mink::cli {
@@ -20,7 +20,7 @@ struct OracleShape {
   std::size_t body_index;
   BodyId body;
   ShapeId shape;
-  const PreparedHull* hull;
+  PreparedHull hull;
   bool dynamic;
 };
 
@@ -57,18 +57,16 @@ void run_oracle(const World& world, const std::vector<OracleShape>& shapes, long
       if (a.body == b.body || (!a.dynamic && !b.dynamic)) continue;
       const Pose pa = world.pose(a.body);
       const Pose pb = world.pose(b.body);
-      const bool ours = gjk_overlap(*a.hull, pa, *b.hull, pb).overlap;
-      const bool theirs = box2d_overlap(a.hull->vertices(), pa, b.hull->vertices(), pb);
+      const bool ours = gjk_overlap(a.hull, pa, b.hull, pb).overlap;
+      const bool theirs = box2d_overlap(a.hull.vertices(), pa, b.hull.vertices(), pb);
       ++result.oracle_pairs;
       result.oracle_overlapping += ours;
       if (ours == theirs) continue;
-      const DistanceResult d = gjk_distance(*a.hull, pa, *b.hull, pb);
-      const double gap =
-          d.overlap ? -penetration(*a.hull, pa, *b.hull, pb, d.simplex).depth : d.distance;
+      const double gap = signed_gap(gjk_distance(a.hull, pa, b.hull, pb), a.hull, pa, b.hull, pb);
       std::vector<Vec2> wa;
       std::vector<Vec2> wb;
-      for (const Vec2& v : a.hull->vertices()) wa.push_back(pa.apply(v));
-      for (const Vec2& v : b.hull->vertices()) wb.push_back(pb.apply(v));
+      for (const Vec2& v : a.hull.vertices()) wa.push_back(pa.apply(v));
+      for (const Vec2& v : b.hull.vertices()) wb.push_back(pb.apply(v));
       const bool exact = hulls_overlap_exact(wa, wb);
       OracleMismatch m{step, a.body_index,         b.body_index,  ours,         exact,
                        gap,  std::abs(gap) > band, std::move(wa), std::move(wb)};
@@ -86,13 +84,11 @@ ContactComparison compare_contacts(const SceneDef& scene, long long steps, int e
   interop::Box2dScene rival = interop::build_box2d_world(scene);  // refuses big hulls first
   World world = build_world(scene);
   // Prepared once: hulls never change, only poses.
-  std::vector<std::unique_ptr<PreparedHull>> prepared;
   std::vector<OracleShape> shapes;
   const std::vector<BodyId> bodies = world.bodies();
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     for (ShapeId shape : world.body_shapes(bodies[i])) {
-      prepared.push_back(std::make_unique<PreparedHull>(world.shape_hull(shape)));
-      shapes.push_back({i, bodies[i], shape, prepared.back().get(),
+      shapes.push_back({i, bodies[i], shape, PreparedHull(world.shape_hull(shape)),
                         world.body_type(bodies[i]) == BodyType::dynamic});
     }
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mink/geometry/types.hpp"
+#include "mink/narrowphase/gjk_distance.hpp"
 
 namespace mink::cli {
 
@@ -16,6 +17,11 @@ struct CrosscheckPair {
   std::vector<Vec2> a;
   std::vector<Vec2> b;
 };
+
+// Our signed distance to touching from gjk_distance's result `d` for the same pair: the
+// distance when apart, minus the penetration depth when overlapping.
+double signed_gap(const DistanceResult& d, const PreparedHull& a, const Pose& pose_a,
+                  const PreparedHull& b, const Pose& pose_b);
 
 // Mostly 3..8 vertices (Box2D's polygon limit); one pair in ten has 16 to 1024 vertices, which
 // Box2D's distance proxy accepts as a vertex cloud. Offsets put about half the pairs in

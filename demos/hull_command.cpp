@@ -23,14 +23,8 @@ struct HullSettings {
 
 int run_hull(const HullSettings& settings, Streams streams) {
   const HullAlgorithm algorithm = parse_hull_algorithm(settings.algorithm);
-  std::vector<Vec2> points;
-  if (settings.input == "-") {
-    points = read_points(streams.in);
-  } else {
-    std::ifstream file(settings.input);
-    if (!file) throw InvalidArgumentError("cannot open '" + settings.input + "'");
-    points = read_points(file);
-  }
+  std::ifstream file;
+  const std::vector<Vec2> points = read_points(open_input(settings.input, streams.in, file));
 
   const auto started = std::chrono::steady_clock::now();
   const ConvexHull hull = build_hull(points, algorithm, HullOptions{settings.prefilter});

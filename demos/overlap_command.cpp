@@ -5,8 +5,8 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
-#include "mink/error.hpp"
 #include "overlap_query.hpp"
+#include "point_reader.hpp"
 
 namespace mink::cli {
 
@@ -14,11 +14,7 @@ namespace {
 
 int run_overlap(const std::string& input, Streams streams) {
   std::ifstream file;
-  if (input != "-") {
-    file.open(input);
-    if (!file) throw InvalidArgumentError("cannot open '" + input + "'");
-  }
-  std::istream& in = input == "-" ? streams.in : file;
+  std::istream& in = open_input(input, streams.in, file);
   std::string line;
   std::size_t line_number = 0;
   bool all_ok = true;

@@ -5,10 +5,10 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
-#include "mink/error.hpp"
 #include "mink/render/gl_context.hpp"
 #include "mink/render/png_file.hpp"
 #include "paper_figures.hpp"
+#include "scene_view.hpp"
 
 namespace mink::cli {
 
@@ -21,27 +21,10 @@ struct PaperOptions {
   PaperSettings settings;
 };
 
-// "WxH" with both in 64..8192.
-void parse_size(const std::string& text, PaperSettings& settings) {
-  const std::size_t x = text.find('x');
-  std::size_t used_w = 0;
-  std::size_t used_h = 0;
-  try {
-    if (x == std::string::npos) throw InvalidArgumentError("");
-    settings.width = std::stoi(text.substr(0, x), &used_w);
-    settings.height = std::stoi(text.substr(x + 1), &used_h);
-  } catch (const std::exception&) {
-    throw InvalidArgumentError("--size '" + text + "' is not WIDTHxHEIGHT, e.g. 1200x700");
-  }
-  if (used_w != x || used_h != text.size() - x - 1 || settings.width < 64 || settings.height < 64 ||
-      settings.width > 8192 || settings.height > 8192) {
-    throw InvalidArgumentError("--size '" + text + "' must be WIDTHxHEIGHT with both in 64..8192");
-  }
-}
-
 int run_paper(PaperOptions options, Streams streams) {
   options.settings.backend = parse_gl_backend(options.gl);
-  parse_size(options.size, options.settings);
+  parse_frame_size(options.size, options.settings.width, options.settings.height,
+                   {.require_even = false, .example = "1200x700"});
   const std::filesystem::path out(options.out);
   std::filesystem::create_directories(out);
   const auto context = make_offscreen_context(options.settings.backend, options.settings.width,

@@ -14,6 +14,7 @@
 #include "mink/narrowphase/gjk_distance.hpp"
 #include "mink/narrowphase/minkowski_difference.hpp"
 #include "mink/render/bitmap_font.hpp"
+#include "text_wrap.hpp"
 
 namespace mink::cli {
 
@@ -70,33 +71,6 @@ Color group_color(std::size_t index) {
   }
   const auto shade = [](double v) { return static_cast<float>(0.15 + 0.7 * v); };
   return Color{shade(r), shade(g), shade(b), 1};
-}
-
-// Breaks lines at spaces so none is longer than `columns` characters (a longer word stays
-// whole); existing line breaks are kept.
-std::string wrap(const std::string& text, std::size_t columns) {
-  std::string wrapped;
-  std::size_t line_length = 0;
-  std::size_t begin = 0;
-  while (begin <= text.size()) {
-    const std::size_t end = std::min(text.find_first_of(" \n", begin), text.size());
-    const std::string word = text.substr(begin, end - begin);
-    if (line_length > 0 && line_length + 1 + word.size() > columns) {
-      wrapped += '\n';
-      line_length = 0;
-    } else if (line_length > 0) {
-      wrapped += ' ';
-      ++line_length;
-    }
-    wrapped += word;
-    line_length += word.size();
-    if (end < text.size() && text[end] == '\n') {
-      wrapped += '\n';
-      line_length = 0;
-    }
-    begin = end + 1;
-  }
-  return wrapped;
 }
 
 // Splits the frame into `count` side-by-side panels, each with a title line on top, and
@@ -258,18 +232,11 @@ std::string vec_text(const Vec2& v) {
 std::string verdict_text(const GjkPicture& picture) {
   std::string text = picture.gjk.overlap ? "GJK: INTERSECT" : "GJK: SEPARATE";
   text += " after " + count_text(static_cast<std::size_t>(picture.gjk.iterations), "support point");
-  if (!picture.gjk.overlap) {
-    const PreparedHull a(ConvexHull::from_ccw_vertices(picture.hull_a));
-    const PreparedHull b(ConvexHull::from_ccw_vertices(picture.hull_b));
-    text += ", distance " + fixed(gjk_distance(a, Pose{}, b, Pose{}).distance);
-  }
+  if (!picture.gjk.overlap) text += ", distance " + fixed(picture.distance);
   return text;
 }
 
 void figure_12(Renderer& r, const PaperSettings& settings) {
-  const auto [set_a, set_b] = paper_point_sets(settings.seed, settings.count);
-  const ConvexHull original_a = chan_hull(set_a);
-  const ConvexHull original_b = divide_conquer_hull(set_b);
   for (int i = 0; i < 2; ++i) {
     const GjkPicture picture = gjk_picture(settings, i == 1);
     panel(r, 2, i,
@@ -279,8 +246,8 @@ void figure_12(Renderer& r, const PaperSettings& settings) {
               vec_text(picture.offset_a) + " (eq. 5); B scaled by " + vec_text(picture.scale_b) +
               ", moved by " + vec_text(picture.offset_b) + "\n" + verdict_text(picture));
     // The hulls before the transforms, faint, for comparison.
-    r.draw_polygon(original_a.vertices(), kNone, with_alpha(kSetA, 0.3f));
-    r.draw_polygon(original_b.vertices(), kNone, with_alpha(kSetB, 0.3f));
+    r.draw_polygon(picture.original_a, kNone, with_alpha(kSetA, 0.3f));
+    r.draw_polygon(picture.original_b, kNone, with_alpha(kSetB, 0.3f));
     r.draw_polygon(picture.hull_a, with_alpha(kSetA, 0.18f), kSetA);
     r.draw_polygon(picture.hull_b, with_alpha(kSetB, 0.18f), kSetB);
     points(r, picture.hull_a, kSetA, 5);
@@ -308,6 +275,8 @@ GjkPicture gjk_picture(const PaperSettings& settings, bool apart) {
   picture.scale_b = Vec2(0.5, 0.4);
   const ConvexHull original_a = chan_hull(set_a);
   const ConvexHull original_b = divide_conquer_hull(set_b);
+  picture.original_a.assign(original_a.vertices().begin(), original_a.vertices().end());
+  picture.original_b.assign(original_b.vertices().begin(), original_b.vertices().end());
   const std::vector<Vec2> scaled_a = scale_about(
       original_a.vertices(), area_properties(original_a.vertices()).centroid, picture.scale_a);
   const std::vector<Vec2> scaled_b = scale_about(
@@ -333,6 +302,7 @@ GjkPicture gjk_picture(const PaperSettings& settings, bool apart) {
   const PreparedHull prepared_a(hull_a);
   const PreparedHull prepared_b(hull_b);
   picture.gjk = gjk_overlap(prepared_a, Pose{}, prepared_b, Pose{});
+  picture.distance = gjk_distance(prepared_a, Pose{}, prepared_b, Pose{}).distance;
   picture.simplex = world_simplex(picture.gjk.simplex, prepared_a, Pose{}, prepared_b, Pose{});
   picture.difference = minkowski_difference(picture.hull_a, picture.hull_b);
   return picture;

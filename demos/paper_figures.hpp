@@ -40,9 +40,12 @@ struct GjkPicture {
   Vec2 scale_b{1, 1};
   Vec2 offset_a{0, 0};
   Vec2 offset_b{0, 0};
+  std::vector<Vec2> original_a;  // the hulls before scale and translate, counter-clockwise
+  std::vector<Vec2> original_b;
   std::vector<Vec2> hull_a;  // world, counter-clockwise, after scale and translate
   std::vector<Vec2> hull_b;
   OverlapResult gjk;             // the paper's boolean GJK
+  Real distance = 0;             // between hull_a and hull_b by GJK distance, 0 when overlapping
   Simplex simplex;               // its final simplex, world points of A - B
   std::vector<Vec2> difference;  // A - B, built explicitly
 };

@@ -79,4 +79,12 @@ std::vector<Vec2> read_points(std::istream& input) {
   return points;
 }
 
+std::istream& open_input(const std::string& path, std::istream& standard_input,
+                         std::ifstream& file) {
+  if (path == "-") return standard_input;
+  file.open(path);
+  if (!file) throw InvalidArgumentError("cannot open '" + path + "'");
+  return file;
+}
+
 }  // namespace mink::cli

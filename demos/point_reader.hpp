@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <fstream>
 #include <istream>
 #include <string>
 #include <string_view>
@@ -26,6 +27,11 @@ class ParseError : public Error {
 // fine). Blank lines and lines starting with '#' are skipped. Numbers are read exactly (the
 // nearest double), in any locale.
 std::vector<Vec2> read_points(std::istream& input);
+
+// The input a command reads: `standard_input` for "-", otherwise the file `path`, opened into
+// `file`. Throws InvalidArgumentError "cannot open 'PATH'" when it cannot be opened.
+std::istream& open_input(const std::string& path, std::istream& standard_input,
+                         std::ifstream& file);
 
 // Parses one line; returns false for a blank or comment line. Throws ParseError otherwise.
 bool parse_point_line(std::string_view line, std::size_t line_number, Vec2& point);

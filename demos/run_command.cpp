@@ -77,9 +77,6 @@ std::size_t awake_bodies(const World& world) {
 }
 
 int run_scene(const RunOptions& options, Streams streams) {
-  if (options.steps && options.seconds) {
-    throw InvalidArgumentError("give --steps or --seconds, not both");
-  }
   if (options.no_render && (options.frames || !options.video.empty())) {
     throw InvalidArgumentError("--no-render cannot write --frames or --video");
   }

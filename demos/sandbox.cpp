@@ -8,6 +8,7 @@
 #include "mink/engine/shape_def.hpp"
 #include "mink/geometry/point_sets.hpp"
 #include "mink/render/bitmap_font.hpp"
+#include "text_wrap.hpp"
 
 namespace mink::cli {
 
@@ -46,13 +47,17 @@ std::string lower(std::string_view text) {
 Sandbox::Sandbox(Renderer& renderer, std::string_view scene)
     : renderer_(renderer), scene_(scene), world_(build_world(builtin_scene(scene))) {
   renderer_.layers = draw_shapes | draw_contact_points;
-  reset();
+  fit_camera();
 }
 
 void Sandbox::reset() {
   world_ = build_world(builtin_scene(scene_));
   dragged_.reset();
   drops_ = 0;
+  fit_camera();
+}
+
+void Sandbox::fit_camera() {
   // The camera shows the moving bodies (every shape when nothing moves) with room around
   // them and above for dropping hulls; it stays put afterwards so the mouse maps to the same
   // place in the world. Grounds reach past the edges.
@@ -170,31 +175,18 @@ void Sandbox::frame() {
   renderer_.draw_overlay(text);
   // The help line at the bottom, broken between its entries when the window is narrow.
   const int scale = renderer_.options().text_scale;
-  const int columns = std::max(1, (renderer_.width() - 16) / (BitmapFont::advance * scale));
-  std::string help_text;
-  int lines = 1;
-  std::size_t line_length = 0;
-  for (std::size_t begin = 0; begin < help.size();) {
-    const std::size_t end = std::min(help.find("  ", begin), help.size());
-    const std::string_view entry = help.substr(begin, end - begin);
-    if (line_length > 0 && line_length + 2 + entry.size() > static_cast<std::size_t>(columns)) {
-      help_text += '\n';
-      ++lines;
-      line_length = 0;
-    } else if (line_length > 0) {
-      help_text += "  ";
-      line_length += 2;
-    }
-    help_text += entry;
-    line_length += entry.size();
-    begin = end + 2;
+  const auto columns = static_cast<std::size_t>(
+      std::max(1, (renderer_.width() - 16) / (BitmapFont::advance * scale)));
+  if (columns != help_columns_) {
+    wrapped_help_ = wrap(help, columns, "  ");
+    help_columns_ = columns;
   }
-  const Vec2 help_at(8, renderer_.height() - 8 - BitmapFont::line_height * scale * lines);
+  const Vec2 help_at(8, renderer_.height() - 8 - BitmapFont::text_height(wrapped_help_) * scale);
   renderer_.draw_screen_rect(
       help_at - Vec2(4, 4),
-      Vec2(help_at.x() + BitmapFont::text_width(help_text) * scale + 4, renderer_.height() - 4),
+      Vec2(help_at.x() + BitmapFont::text_width(wrapped_help_) * scale + 4, renderer_.height() - 4),
       Color{0, 0, 0, 0.55f});
-  renderer_.draw_screen_text(help_at, help_text, Color{0.9f, 0.9f, 0.6f, 1});
+  renderer_.draw_screen_text(help_at, wrapped_help_, Color{0.9f, 0.9f, 0.6f, 1});
   renderer_.end_frame();
 }
 

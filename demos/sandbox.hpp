@@ -47,6 +47,7 @@ class Sandbox {
 
  private:
   void reset();
+  void fit_camera();
   void step();
   void drop_hull(const Vec2& world_point);
 
@@ -60,6 +61,9 @@ class Sandbox {
   std::optional<BodyId> dragged_;
   Vec2 grab_local_{0, 0};  // the grabbed point in the dragged body's frame
   Vec2 cursor_{0, 0};      // world
+  // The help text wrapped for help_columns_ characters, redone only when the width changes.
+  std::size_t help_columns_ = 0;
+  std::string wrapped_help_;
 };
 
 }  // namespace mink::cli

@@ -153,23 +153,11 @@ WorldDef read_world(const Json& value, const std::string& path) {
 BodyType parse_body_type(const Json& v, const std::string& path) {
   if (v.is_string()) {
     const std::string s = v.get<std::string>();
-    if (s == "static") return BodyType::static_body;
-    if (s == "kinematic") return BodyType::kinematic;
-    if (s == "dynamic") return BodyType::dynamic;
+    for (const BodyType type : {BodyType::static_body, BodyType::kinematic, BodyType::dynamic}) {
+      if (s == to_string(type)) return type;
+    }
   }
   throw SceneFileError(path, "expected \"static\", \"kinematic\" or \"dynamic\", got " + v.dump());
-}
-
-std::string_view body_type_name(BodyType type) {
-  switch (type) {
-    case BodyType::static_body:
-      return "static";
-    case BodyType::kinematic:
-      return "kinematic";
-    case BodyType::dynamic:
-      return "dynamic";
-  }
-  return "static";
 }
 
 ShapeDef read_shape(const Json& value, const std::string& path) {
@@ -431,7 +419,7 @@ std::string scene_to_json(const SceneDef& scene) {
       }
       shapes.push_back(std::move(shape));
     }
-    bodies.push_back({{"type", std::string(body_type_name(b.type))},
+    bodies.push_back({{"type", std::string(to_string(b.type))},
                       {"position", vec_json(b.position)},
                       {"angle", b.angle},
                       {"linear_velocity", vec_json(b.linear_velocity)},

@@ -56,7 +56,8 @@ void draw_world_frame(Renderer& renderer, const World& world, const std::string&
   renderer.end_frame();
 }
 
-void parse_frame_size(const std::string& text, int& width, int& height) {
+void parse_frame_size(const std::string& text, int& width, int& height,
+                      const FrameSizeRules& rules) {
   const std::size_t x = text.find('x');
   std::size_t used_w = 0;
   std::size_t used_h = 0;
@@ -65,12 +66,15 @@ void parse_frame_size(const std::string& text, int& width, int& height) {
     width = std::stoi(text.substr(0, x), &used_w);
     height = std::stoi(text.substr(x + 1), &used_h);
   } catch (const std::exception&) {
-    throw InvalidArgumentError("--size '" + text + "' is not WIDTHxHEIGHT, e.g. 1280x720");
+    throw InvalidArgumentError("--size '" + text + "' is not WIDTHxHEIGHT, e.g. " +
+                               std::string(rules.example));
   }
+  const bool odd = width % 2 != 0 || height % 2 != 0;
   if (used_w != x || used_h != text.size() - x - 1 || width < 64 || height < 64 || width > 8192 ||
-      height > 8192 || width % 2 != 0 || height % 2 != 0) {
-    throw InvalidArgumentError("--size '" + text +
-                               "' must be WIDTHxHEIGHT, both even and in 64..8192");
+      height > 8192 || (rules.require_even && odd)) {
+    throw InvalidArgumentError(
+        "--size '" + text + "' must be WIDTHxHEIGHT" +
+        (rules.require_even ? ", both even and in 64..8192" : " with both in 64..8192"));
   }
 }
 

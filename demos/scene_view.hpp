@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "mink/engine/world.hpp"
 #include "mink/render/camera.hpp"
@@ -18,7 +19,14 @@ Real kinetic_energy(const World& world);
 // One frame: the world through World::draw, then `overlay` at the top-left corner.
 void draw_world_frame(Renderer& renderer, const World& world, const std::string& overlay);
 
-// "WxH" with both even (video needs even sizes) and in 64..8192; throws InvalidArgumentError.
-void parse_frame_size(const std::string& text, int& width, int& height);
+struct FrameSizeRules {
+  bool require_even = true;               // video needs even sizes; PNG figures do not
+  std::string_view example = "1280x720";  // shown when the text is not WIDTHxHEIGHT at all
+};
+
+// "WxH" with both in 64..8192 (and even, unless `rules` says otherwise); throws
+// InvalidArgumentError.
+void parse_frame_size(const std::string& text, int& width, int& height,
+                      const FrameSizeRules& rules = {});
 
 }  // namespace mink::cli

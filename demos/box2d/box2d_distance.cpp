@@ -6,8 +6,6 @@
 
 namespace mink::interop {
 
-namespace {
-
 std::vector<b2Vec2> to_float(std::span<const Vec2> points) {
   std::vector<b2Vec2> out;
   out.reserve(points.size());
@@ -15,8 +13,6 @@ std::vector<b2Vec2> to_float(std::span<const Vec2> points) {
     out.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
   return out;
 }
-
-}  // namespace
 
 Box2dDistance box2d_distance(std::span<const Vec2> a, std::span<const Vec2> b) {
   const std::vector<b2Vec2> va = to_float(a);

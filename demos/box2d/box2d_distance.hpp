@@ -1,6 +1,9 @@
 #pragma once
 
+#include <box2d/b2_math.h>
+
 #include <span>
+#include <vector>
 
 #include "mink/geometry/types.hpp"
 
@@ -13,6 +16,9 @@ struct Box2dDistance {
   double distance = 0;
   int iterations = 0;
 };
+
+// The points rounded to float, as Box2D's vertices.
+std::vector<b2Vec2> to_float(std::span<const Vec2> points);
 
 Box2dDistance box2d_distance(std::span<const Vec2> a, std::span<const Vec2> b);
 

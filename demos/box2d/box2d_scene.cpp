@@ -5,20 +5,11 @@
 #include <string>
 #include <vector>
 
+#include "box2d_distance.hpp"
 #include "mink/engine/shape_def.hpp"
 #include "mink/error.hpp"
 
 namespace mink::interop {
-
-namespace {
-
-const char* type_name(BodyType type) {
-  return type == BodyType::dynamic     ? "dynamic"
-         : type == BodyType::kinematic ? "kinematic"
-                                       : "static";
-}
-
-}  // namespace
 
 Box2dScene build_box2d_world(const SceneDef& scene) {
   // Every hull first, so a refused scene makes no Box2D world at all.
@@ -29,7 +20,7 @@ Box2dScene build_box2d_world(const SceneDef& scene) {
       hulls[i].push_back(make_shape_hull(body.shapes[k]));
       if (hulls[i].back().size() > b2_maxPolygonVertices) {
         throw InvalidArgumentError(
-            "body " + std::to_string(i) + " (" + type_name(body.body.type) + ", at " +
+            "body " + std::to_string(i) + " (" + std::string(to_string(body.body.type)) + ", at " +
             std::to_string(body.body.position.x()) + ", " + std::to_string(body.body.position.y()) +
             ") shape " + std::to_string(k) + " has " + std::to_string(hulls[i].back().size()) +
             " hull vertices; a Box2D polygon holds at most " +
@@ -63,10 +54,7 @@ Box2dScene build_box2d_world(const SceneDef& scene) {
     for (std::size_t k = 0; k < body.shapes.size(); ++k) {
       const ShapeDef& shape = body.shapes[k];
       const ConvexHull& hull = hulls[i][k];
-      std::vector<b2Vec2> vertices;
-      for (const Vec2& v : hull.vertices()) {
-        vertices.emplace_back(static_cast<float>(v.x()), static_cast<float>(v.y()));
-      }
+      const std::vector<b2Vec2> vertices = to_float(hull.vertices());
       b2PolygonShape polygon;
       polygon.Set(vertices.data(), static_cast<int32>(vertices.size()));
       b2FixtureDef fixture;

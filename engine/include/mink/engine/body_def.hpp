@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 
 #include "mink/geometry/types.hpp"
 
@@ -10,6 +11,9 @@ namespace mink {
 /// static_body: never moves; kinematic: moves by its set velocity, unaffected by forces and
 /// contacts; dynamic: moved by gravity, forces and contacts.
 enum class BodyType : std::uint8_t { static_body, kinematic, dynamic };
+
+/// @brief "static", "kinematic" or "dynamic", as scene files spell the type.
+std::string_view to_string(BodyType type) noexcept;
 
 /// Everything World::create_body needs; plain data. Units: metres, radians, seconds.
 struct BodyDef {
