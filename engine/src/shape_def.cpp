@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include "mink/error.hpp"
 #include "mink/geometry/transform.hpp"
@@ -40,16 +43,149 @@ ShapeDef ShapeDef::regular_polygon(int count, Real radius, const Vec2& center) {
   return def;
 }
 
-ConvexHull make_shape_hull(const ShapeDef& def) {
-  const auto check = [](Real value, const char* name) {
-    if (!std::isfinite(value) || value < 0) {
-      throw InvalidArgumentError(std::string("ShapeDef.") + name +
-                                 " must be finite and non-negative, got " + std::to_string(value));
+ShapeDef ShapeDef::circle(Real radius, const Vec2& center) {
+  ShapeDef def;
+  def.type = ShapeType::circle;
+  def.points = {center};
+  def.radius = radius;
+  return def;
+}
+
+ShapeDef ShapeDef::capsule(const Vec2& center1, const Vec2& center2, Real radius) {
+  ShapeDef def;
+  def.type = ShapeType::capsule;
+  def.points = {center1, center2};
+  def.radius = radius;
+  return def;
+}
+
+ShapeDef ShapeDef::segment(const Vec2& point1, const Vec2& point2) {
+  ShapeDef def;
+  def.type = ShapeType::segment;
+  def.points = {point1, point2};
+  return def;
+}
+
+ShapeDef ShapeDef::chain(std::vector<Vec2> points, bool loop) {
+  ShapeDef def;
+  def.type = ShapeType::chain;
+  def.points = std::move(points);
+  def.loop = loop;
+  return def;
+}
+
+std::string_view to_string(ShapeType type) noexcept {
+  switch (type) {
+    case ShapeType::polygon:
+      return "polygon";
+    case ShapeType::circle:
+      return "circle";
+    case ShapeType::capsule:
+      return "capsule";
+    case ShapeType::segment:
+      return "segment";
+    case ShapeType::chain:
+      return "chain";
+  }
+  return "unknown";
+}
+
+namespace {
+
+void require(bool ok, const std::string& message) {
+  if (!ok) throw InvalidArgumentError(message);
+}
+
+std::string number(Real value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+void check_material(Real value, const char* name) {
+  require(std::isfinite(value) && value >= 0,
+          std::string("ShapeDef.") + name + " must be finite and non-negative, got " + number(value));
+}
+
+void check_points_finite(const std::vector<Vec2>& points) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!std::isfinite(points[i].x()) || !std::isfinite(points[i].y())) {
+      throw NonFiniteInputError(i);
     }
-  };
-  check(def.density, "density");
-  check(def.friction, "friction");
-  check(def.restitution, "restitution");
+  }
+}
+
+void check_point_count(const ShapeDef& def, std::size_t count) {
+  require(def.points.size() == count, "ShapeDef.points: a " + std::string(to_string(def.type)) +
+                                          " takes " + std::to_string(count) + " point" +
+                                          (count == 1 ? "" : "s") + ", got " +
+                                          std::to_string(def.points.size()));
+}
+
+}  // namespace
+
+void check_shape_def(const ShapeDef& def) {
+  check_material(def.density, "density");
+  check_material(def.friction, "friction");
+  check_material(def.restitution, "restitution");
+  require(std::isfinite(def.radius) && def.radius >= 0,
+          "ShapeDef.radius must be finite and non-negative, got " + number(def.radius));
+  require(!def.scale || def.type == ShapeType::polygon,
+          "ShapeDef.scale applies to polygons only, not to a " + std::string(to_string(def.type)));
+  require(!def.loop || def.type == ShapeType::chain, "ShapeDef.loop applies to chains only");
+  switch (def.type) {
+    case ShapeType::polygon:
+      make_shape_hull(def);  // throws the hull errors
+      break;
+    case ShapeType::circle:
+      check_point_count(def, 1);
+      check_points_finite(def.points);
+      require(def.radius > 0, "ShapeDef.radius of a circle must be positive, got " +
+                                  number(def.radius));
+      break;
+    case ShapeType::capsule:
+    case ShapeType::segment:
+      check_point_count(def, 2);
+      check_points_finite(def.points);
+      require(def.points[0] != def.points[1],
+              "ShapeDef.points of a " + std::string(to_string(def.type)) + " must differ");
+      if (def.type == ShapeType::capsule) {
+        require(def.radius > 0, "ShapeDef.radius of a capsule must be positive, got " +
+                                    number(def.radius));
+      } else {
+        require(def.radius == 0, "ShapeDef.radius of a segment must be 0 (use a capsule)");
+      }
+      break;
+    case ShapeType::chain: {
+      const std::size_t needed = def.loop ? 3 : 2;
+      require(def.points.size() >= needed, "ShapeDef.points: a " +
+                                               std::string(def.loop ? "looped " : "") +
+                                               "chain needs at least " + std::to_string(needed) +
+                                               " points, got " + std::to_string(def.points.size()));
+      check_points_finite(def.points);
+      for (std::size_t i = 0; i + 1 < def.points.size(); ++i) {
+        require(def.points[i] != def.points[i + 1],
+                "ShapeDef.points of a chain: points " + std::to_string(i) + " and " +
+                    std::to_string(i + 1) + " are equal");
+      }
+      require(!def.loop || def.points.front() != def.points.back(),
+              "ShapeDef.points of a looped chain: the last point repeats the first (the loop "
+              "closes itself)");
+      require(def.radius == 0, "ShapeDef.radius of a chain must be 0");
+      require(!def.is_sensor, "a chain cannot be a sensor");
+      break;
+    }
+  }
+}
+
+ConvexHull make_shape_hull(const ShapeDef& def) {
+  if (def.type != ShapeType::polygon) {
+    throw InvalidArgumentError("make_shape_hull: a " + std::string(to_string(def.type)) +
+                               " is not a polygon");
+  }
+  check_material(def.density, "density");
+  check_material(def.friction, "friction");
+  check_material(def.restitution, "restitution");
   if (def.scale) {
     if (!std::isfinite(def.scale->fixed_point.x()) || !std::isfinite(def.scale->fixed_point.y())) {
       throw InvalidArgumentError("ShapeDef.scale.fixed_point must be finite");

@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <string>
+#include <type_traits>
+#include <variant>
+
+#include "mink/error.hpp"
+#include "mink/geometry/convex_hull.hpp"
 
 #include "world_state.hpp"
 
@@ -9,34 +14,17 @@ namespace mink {
 
 namespace {
 
-// Separating-axis test of a posed hull against a box: the box axes and the hull's edge
-// normals are the only candidate axes for two convex polygons.
-bool hull_overlaps_box(const ConvexHull& hull, const Pose& pose, const Aabb& box) {
-  const auto local = hull.vertices();
-  std::vector<Vec2> world(local.size());
-  Aabb bounds{pose.apply(local[0]), pose.apply(local[0])};
-  for (std::size_t i = 0; i < local.size(); ++i) {
-    world[i] = pose.apply(local[i]);
-    bounds.lower = bounds.lower.cwiseMin(world[i]);
-    bounds.upper = bounds.upper.cwiseMax(world[i]);
+// The box as narrowphase geometry in world coordinates (identity pose): a polygon, or a
+// segment or point when it is flat, so exact overlap is one distance test for every kind.
+ShapeGeometry box_geometry(const Aabb& box) {
+  const Vec2 lo = box.lower, hi = box.upper;
+  if (lo.x() < hi.x() && lo.y() < hi.y()) {
+    const std::vector<Vec2> corners = {lo, Vec2(hi.x(), lo.y()), hi, Vec2(lo.x(), hi.y())};
+    return RoundedPolygon{PreparedHull(build_hull(corners, HullAlgorithm::monotone_chain)), 0};
   }
-  if (!bounds.overlaps(box)) return false;
-  const Vec2 corners[4] = {box.lower, Vec2(box.upper.x(), box.lower.y()), box.upper,
-                           Vec2(box.lower.x(), box.upper.y())};
-  for (std::size_t i = 0; i < world.size(); ++i) {
-    const Vec2 edge = world[(i + 1) % world.size()] - world[i];
-    const Vec2 normal(edge.y(), -edge.x());
-    const Real limit = normal.dot(world[i]);
-    bool all_outside = true;
-    for (const Vec2& corner : corners) all_outside = all_outside && normal.dot(corner) > limit;
-    if (all_outside) return false;
-  }
-  return true;
+  if (lo == hi) return Circle{lo, 0};
+  return Segment{lo, hi};
 }
-
-}  // namespace
-
-namespace {
 
 // The live shapes behind broadphase candidates (a destroyed shape's proxy lingers until the
 // next step), with their slot and pose.
@@ -47,7 +35,7 @@ void for_each_candidate(const WorldState& w, const std::vector<ProxyId>& proxies
     if (index >= w.shapes.size()) continue;
     const detail::Shape& s = w.shapes[index];
     if (!s.alive || s.proxy != proxy) continue;
-    visit(index, s.hull->hull(), w.bodies[s.body].pose());
+    visit(index, s.geometry, w.bodies[s.body].pose());
   }
 }
 
@@ -60,14 +48,21 @@ std::vector<ShapeId> sorted_by_slot(std::vector<ShapeId> found) {
 }  // namespace
 
 std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
+  if (!(box.lower.allFinite() && box.upper.allFinite() && box.lower.x() <= box.upper.x() &&
+        box.lower.y() <= box.upper.y())) {
+    throw InvalidArgumentError("query_aabb: the box must be finite with lower <= upper");
+  }
   const WorldState& w = *state_;
+  const ShapeGeometry probe = box_geometry(box);
   std::vector<ProxyId> proxies;
   w.broadphase.query(box, proxies);
   std::vector<ShapeId> found;
-  for_each_candidate(w, proxies,
-                     [&](std::uint32_t index, const ConvexHull& hull, const Pose& pose) {
-                       if (hull_overlaps_box(hull, pose, box)) found.push_back(w.shape_id(index));
-                     });
+  for_each_candidate(
+      w, proxies, [&](std::uint32_t index, const ShapeGeometry& geometry, const Pose& pose) {
+        if (shape_distance(probe, Pose{}, geometry, pose).overlap) {
+          found.push_back(w.shape_id(index));
+        }
+      });
   return sorted_by_slot(std::move(found));
 }
 
@@ -76,10 +71,10 @@ std::vector<ShapeId> World::query_point(const Vec2& point) const {
   std::vector<ProxyId> proxies;
   w.broadphase.query_point(point, proxies);
   std::vector<ShapeId> found;
-  for_each_candidate(w, proxies,
-                     [&](std::uint32_t index, const ConvexHull& hull, const Pose& pose) {
-                       if (hull_contains(hull, pose, point)) found.push_back(w.shape_id(index));
-                     });
+  for_each_candidate(
+      w, proxies, [&](std::uint32_t index, const ShapeGeometry& geometry, const Pose& pose) {
+        if (contains_point(geometry, pose, point)) found.push_back(w.shape_id(index));
+      });
   return sorted_by_slot(std::move(found));
 }
 
@@ -91,8 +86,8 @@ std::optional<ShapeRayHit> World::ray_cast(const Vec2& origin, const Vec2& trans
   w.broadphase.query(box, proxies);
   std::optional<ShapeRayHit> best;
   for_each_candidate(
-      w, proxies, [&](std::uint32_t index, const ConvexHull& hull, const Pose& pose) {
-        const auto hit = ray_cast_hull(hull, pose, origin, translation);
+      w, proxies, [&](std::uint32_t index, const ShapeGeometry& geometry, const Pose& pose) {
+        const auto hit = mink::ray_cast(geometry, pose, origin, translation);
         // Ties go to the lower slot so the answer does not depend on broadphase order.
         if (hit && (!best || hit->fraction < best->hit.fraction ||
                     (hit->fraction == best->hit.fraction && index < best->shape.index))) {
@@ -109,26 +104,48 @@ void World::draw(DebugDraw& draw) const {
       aabb_color{0.9f, 0.3f, 0.9f, 1}, point_color{1, 0.2f, 0.2f, 1},
       normal_color{0.9f, 0.9f, 0.3f, 1}, pair_color{0.3f, 0.9f, 0.9f, 1},
       velocity_color{1, 1, 1, 1};
+  const Color sensor_color{0.9f, 0.9f, 0.3f, 0.25f};
   std::vector<Vec2> polygon;
   if (draw.layers & draw_shapes) {
     for (const detail::Shape& s : w.shapes) {
       if (!s.alive) continue;
       const detail::Body& b = w.bodies[s.body];
-      polygon.clear();
-      for (const Vec2& v : s.hull->vertices()) polygon.push_back(b.pose().apply(v));
+      const Pose pose = b.pose();
       Color color = b.type == BodyType::static_body ? static_color
                     : b.type == BodyType::kinematic ? kinematic_color
                                                     : dynamic_color;
       if ((draw.layers & draw_sleep_state) && b.type == BodyType::dynamic && !b.awake) {
         color = sleeping_color;
       }
+      if (s.sensor) color = sensor_color;
       const Color outline{color.r * 0.6f, color.g * 0.6f, color.b * 0.6f, 1};
-      draw.draw_polygon(polygon, color, outline);
+      std::visit(
+          [&](const auto& g) {
+            using G = std::decay_t<decltype(g)>;
+            if constexpr (std::is_same_v<G, Circle>) {
+              draw.draw_solid_circle(pose.apply(g.center), g.radius, b.rotation.angle(), color,
+                                     outline);
+            } else if constexpr (std::is_same_v<G, Capsule>) {
+              draw.draw_solid_capsule(pose.apply(g.center1), pose.apply(g.center2), g.radius,
+                                      color, outline);
+            } else if constexpr (std::is_same_v<G, Segment>) {
+              draw.draw_segment(pose.apply(g.point1), pose.apply(g.point2), outline);
+            } else if constexpr (std::is_same_v<G, ChainSegment>) {
+              draw.draw_segment(pose.apply(g.segment.point1), pose.apply(g.segment.point2),
+                                outline);
+            } else {
+              polygon.clear();
+              for (const Vec2& v : g.hull.vertices()) polygon.push_back(pose.apply(v));
+              draw.draw_rounded_polygon(polygon, g.radius, color, outline);
+            }
+          },
+          s.geometry);
     }
   }
   if (draw.layers & draw_aabbs) {
     for (const detail::Shape& s : w.shapes) {
       if (!s.alive) continue;
+      if (s.proxy == null_proxy) continue;  // a disabled body's shape
       const Aabb& box = w.broadphase.fat_aabb(s.proxy);
       const Vec2 corners[4] = {box.lower, Vec2(box.upper.x(), box.lower.y()), box.upper,
                                Vec2(box.lower.x(), box.upper.y())};

@@ -1,99 +1,28 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <unordered_map>
 #include <vector>
 
+#include "body.hpp"
+#include "contact.hpp"
 #include "contact_solver.hpp"
+#include "id_pool.hpp"
 #include "mink/broadphase/sweep_and_prune.hpp"
 #include "mink/engine/contact_events.hpp"
 #include "mink/engine/world.hpp"
-#include "mink/narrowphase/manifold.hpp"
-#include "mink/narrowphase/prepared_hull.hpp"
+#include "sensor.hpp"
+#include "shape.hpp"
 
 namespace mink {
 
-namespace detail {
-
-// What every step reads sits in the first two cache lines (pose, velocities, inverse masses,
-// flags); the rest is touched by the API and the sleep pass only.
-struct alignas(64) Body {
-  // Pose: centre of mass and rotation are the state; the origin follows from them.
-  Vec2 center{0, 0};
-  Rotation rotation{};
-  Vec2 origin{0, 0};
-  Vec2 velocity{0, 0};
-  Real angular_velocity = 0;
-  Real inv_mass = 0, inv_inertia = 0;
-  Real extent = 0;  // farthest shape vertex from the centre of mass
-  BodyType type = BodyType::static_body;
-  bool alive = false;
-  bool awake = true;
-  bool allow_sleep = true;
-
-  Vec2 local_center{0, 0};
-  Vec2 force{0, 0};
-  Real torque = 0;
-  Real mass = 0, inertia = 0;
-  Real linear_damping = 0, angular_damping = 0, gravity_scale = 1;
-  Real sleep_time = 0;
-  std::uint64_t user_data = 0;
-  std::vector<std::uint32_t> shapes;
-  std::uint32_t generation = 0;
-
-  Pose pose() const { return {origin, rotation}; }
-};
-
-struct Shape {
-  std::optional<PreparedHull> hull;
-  Aabb aabb;  // tight box at the current pose, grown by the speculative margin and the sweep
-  Real density = 1, friction = 0.6, restitution = 0;
-  HullAlgorithm algorithm = HullAlgorithm::chan;
-  ProxyId proxy = null_proxy;
-  std::uint32_t body = 0;
-  std::uint32_t generation = 0;
-  bool alive = false;
-};
-
-// Where a manifold was computed, so it can be carried along while the pair barely moves: the
-// pose of B in A's frame, the normal in A's frame, each point's surface points in their own
-// body's frame.
-struct ManifoldCache {
-  Pose relative;
-  Vec2 normal{0, 0};
-  Vec2 on_a[2] = {Vec2(0, 0), Vec2(0, 0)};
-  Vec2 on_b[2] = {Vec2(0, 0), Vec2(0, 0)};
-  bool valid = false;
-};
-
-// Ordered by use: what building constraints reads comes first, the manifold cache (collide
-// only) last.
-struct Contact {
-  Manifold manifold;
-  std::uint32_t body_a = 0, body_b = 0;
-  Real normal_impulse[2] = {0, 0};
-  Real tangent_impulse[2] = {0, 0};
-  Real friction = 0, restitution = 0;
-  std::uint32_t shape_a = 0, shape_b = 0;
-  ProxyId proxy_a = null_proxy, proxy_b = null_proxy;
-  bool touching = false;
-  ManifoldCache cache;
-};
-
-inline std::uint64_t pair_key(ProxyId a, ProxyId b) {
-  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
-}
-
-}  // namespace detail
-
+// Everything a World owns. Each concept's data and operations live in their own file (body,
+// shape, contact, sensor, island, the solver stages); this is where they meet.
 struct WorldState {
   WorldDef def;
-  std::vector<detail::Body> bodies;
-  std::vector<std::uint32_t> free_bodies;
-  std::vector<detail::Shape> shapes;
-  std::vector<std::uint32_t> free_shapes;
-  std::size_t live_bodies = 0, live_shapes = 0;
+  std::uint32_t serial = 0;  // this world's number, carried by every id it issues
+  detail::IdPool<detail::Body> bodies;
+  detail::IdPool<detail::Shape> shapes;
 
   SweepAndPrune broadphase;
   PairEvents pair_events;
@@ -103,15 +32,25 @@ struct WorldState {
 
   std::vector<detail::Contact> contacts;
   std::unordered_map<std::uint64_t, std::uint32_t> contact_index;
+  std::vector<detail::SensorState> sensors;  // sorted by sensor shape slot
 
   std::vector<ContactBeginEvent> begin_events;
   std::vector<ContactEndEvent> end_events;
+  std::vector<ContactHitEvent> hit_events;
+  std::vector<SensorBeginEvent> sensor_begin_events;
+  std::vector<SensorEndEvent> sensor_end_events;
+  std::vector<BodyMoveEvent> move_events;
+  std::vector<std::uint32_t> fell_asleep;  // bodies the last step put to sleep
   StepCounters counters;
   StepProfile profile;
 
   Real time = 0;
   Real accumulator = 0;
   std::uint64_t step_count = 0;
+  std::uint32_t next_chain = 0;
+  // The step being run: WorldDef's by default, or what step(dt, substeps) asked for.
+  Real dt = 0;
+  int substeps = 1;
 
   // Step scratch, kept to avoid allocating every step.
   std::vector<detail::SolverBody> solver_bodies;
@@ -124,22 +63,44 @@ struct WorldState {
   detail::ContactSolver contact_solver;
   std::vector<std::uint32_t> island_parent;
   std::vector<Real> island_min_sleep;
+  std::vector<ProxyId> query_scratch;
 
-  detail::Body& body(BodyId id);
-  const detail::Body& body(BodyId id) const;
-  detail::Shape& shape(ShapeId id);
-  const detail::Shape& shape(ShapeId id) const;
-  ShapeId shape_id(std::uint32_t index) const { return {index, shapes[index].generation}; }
+  detail::Body& body(BodyId id) { return bodies.get(id, serial, "body"); }
+  const detail::Body& body(BodyId id) const {
+    return const_cast<WorldState*>(this)->body(id);
+  }
+  detail::Shape& shape(ShapeId id) { return shapes.get(id, serial, "shape"); }
+  const detail::Shape& shape(ShapeId id) const {
+    return const_cast<WorldState*>(this)->shape(id);
+  }
+  ShapeId shape_id(std::uint32_t index) const {
+    return {index, shapes[index].generation, serial};
+  }
+  BodyId body_id(std::uint32_t index) const { return {index, bodies[index].generation, serial}; }
 
+  void clear_events();
+  // body.cpp
   void wake(detail::Body& body);
   void update_mass(detail::Body& body);
+  // shape.cpp
   void update_shape_aabb(detail::Shape& shape, const detail::Body& body, Real dt);
+  void create_proxy(std::uint32_t shape_index);
+  void destroy_proxy(detail::Shape& shape);
+  // Re-makes the shape's broadphase proxy, so every pair it is in is tested again next step
+  // (after a filter, type or enable change); its contacts end now.
+  void refresh_proxy(std::uint32_t shape_index);
+  // contact.cpp
   void destroy_contact(std::uint32_t index);
   void destroy_shape_contacts(std::uint32_t shape_index);
-
+  bool should_make_contact(std::uint32_t shape_a, std::uint32_t shape_b) const;
   void update_pairs();
   void collide();
+  // sensor.cpp
+  void update_sensors();
+  void destroy_sensor(std::uint32_t shape_index);
+  // island.cpp
   void update_islands();
+  // solver_stages.cpp
   void prepare_contacts();
   void solve();
   void finish_step();

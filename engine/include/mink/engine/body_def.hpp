@@ -20,13 +20,18 @@ struct BodyDef {
   BodyType type = BodyType::static_body;  ///< static unless set
   Vec2 position{0, 0};                    ///< of the body origin, the frame its shapes are given in
   Real angle = 0;                         ///< radians
-  Vec2 linear_velocity{0, 0};             ///< of the body origin (as in Box2D)
+  Vec2 linear_velocity{0, 0};             ///< of the centre of mass, m/s
   Real angular_velocity = 0;              ///< rad/s, counter-clockwise positive
   Real linear_damping = 0;                ///< >= 0, slows linear velocity over time
   Real angular_damping = 0;               ///< >= 0, slows angular velocity over time
   Real gravity_scale = 1;                 ///< multiplies the world's gravity for this body
   bool allow_sleep = true;                ///< false keeps the body awake
   bool awake = true;                      ///< false creates it asleep
+  bool enabled = true;                    ///< false: in the world but not simulated or collided
+  bool fixed_rotation = false;            ///< true: never rotates (infinite rotational inertia)
+  /// Continuous collision against dynamic bodies too, not only against static and kinematic
+  /// ones (for small fast bodies).
+  bool bullet = false;
   std::uint64_t user_data = 0;            ///< anything the caller wants back from World::user_data
 };
 

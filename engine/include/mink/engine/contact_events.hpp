@@ -1,13 +1,19 @@
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
+
 #include "mink/engine/ids.hpp"
+#include "mink/narrowphase/manifold.hpp"
+#include "mink/narrowphase/pose.hpp"
 
 namespace mink {
 
 /// @brief Two shapes started touching during the last step (closer than the speculative distance).
 struct ContactBeginEvent {
-  ShapeId shape_a;  ///< one shape of the pair
-  ShapeId shape_b;  ///< the other
+  ShapeId shape_a;    ///< one shape of the pair
+  ShapeId shape_b;    ///< the other
+  Manifold manifold;  ///< the contact when it began (normal from A to B, points, separations)
 };
 
 /// @brief Two shapes stopped touching, or one of them was destroyed while touching.
@@ -16,13 +22,51 @@ struct ContactEndEvent {
   ShapeId shape_b;  ///< the other
 };
 
+/// @brief Two shapes met faster than WorldDef::hit_event_threshold (either shape asked for hit
+/// events).
+struct ContactHitEvent {
+  ShapeId shape_a;       ///< one shape of the pair
+  ShapeId shape_b;       ///< the other
+  Vec2 point{0, 0};      ///< where, world
+  Vec2 normal{0, 0};     ///< unit, from A to B
+  Real approach_speed = 0;  ///< normal closing speed before the step's solve, m/s, > 0
+};
+
+/// @brief A shape began overlapping a sensor.
+struct SensorBeginEvent {
+  ShapeId sensor;   ///< the sensor shape
+  ShapeId visitor;  ///< the shape that entered it
+};
+
+/// @brief A shape stopped overlapping a sensor, or one of the two was destroyed.
+struct SensorEndEvent {
+  ShapeId sensor;   ///< the sensor shape (may be stale when it was destroyed)
+  ShapeId visitor;  ///< the shape that left it (may be stale)
+};
+
+/// @brief A body moved during the last step: its new pose, for renderers and games that sync
+/// only what changed.
+struct BodyMoveEvent {
+  BodyId body;              ///< the body
+  Pose pose;                ///< of the body origin, world
+  bool fell_asleep = false;  ///< it went to sleep at the end of this step
+  std::uint64_t user_data = 0;  ///< the body's user data
+};
+
+/// @brief One contact of a body (World::body_contacts).
+struct ContactData {
+  ShapeId shape_a;    ///< one shape of the pair
+  ShapeId shape_b;    ///< the other
+  Manifold manifold;  ///< points, normal from A to B, separations
+};
+
 /// @brief What the last step did, for tools and tests.
 struct StepCounters {
   std::size_t broadphase_pairs = 0;   ///< overlapping box pairs the broadphase reported
   std::size_t contacts = 0;           ///< pairs with a contact record
   std::size_t touching_contacts = 0;  ///< contacts with manifold points within touching distance
   std::size_t awake_bodies = 0;       ///< bodies simulated (not asleep)
-  std::size_t islands = 0;  ///< awake islands found by the sleep pass (0 when sleep is off)
+  std::size_t islands = 0;            ///< awake islands
   std::size_t constraint_colors = 0;     ///< graph colours the solver used
   std::size_t overflow_constraints = 0;  ///< contacts solved one at a time (colours ran out)
 };

@@ -43,6 +43,17 @@ class DebugDraw {
   /// @brief A label anchored at a world position, drawn at a fixed screen size.
   virtual void draw_text(const Vec2& position, std::string_view text, Color color) = 0;
 
+  /// A filled disk with a radius line at `angle` (so rolling shows). By default a polygon of
+  /// enough sides to look round, its outline and the line; a renderer may draw it directly.
+  virtual void draw_solid_circle(const Vec2& center, Real radius, Real angle, Color fill,
+                                 Color outline);
+  /// @brief A filled capsule (stadium); by default tessellated like draw_solid_circle.
+  virtual void draw_solid_capsule(const Vec2& center1, const Vec2& center2, Real radius,
+                                  Color fill, Color outline);
+  /// @brief A convex polygon (counter-clockwise) rounded by `radius`; by default tessellated.
+  virtual void draw_rounded_polygon(std::span<const Vec2> vertices, Real radius, Color fill,
+                                    Color outline);
+
   /// DrawLayer flags the caller wants drawn.
   std::uint32_t layers = draw_shapes | draw_contact_points;
 };

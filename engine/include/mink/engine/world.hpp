@@ -10,11 +10,13 @@
 #include "mink/engine/body_def.hpp"
 #include "mink/engine/contact_events.hpp"
 #include "mink/engine/debug_draw.hpp"
+#include "mink/engine/filter.hpp"
 #include "mink/engine/ids.hpp"
-#include "mink/engine/ray_cast.hpp"
+#include "mink/narrowphase/ray_cast.hpp"
 #include "mink/engine/shape_def.hpp"
 #include "mink/engine/world_def.hpp"
 #include "mink/narrowphase/pose.hpp"
+#include "mink/narrowphase/shape_geometry.hpp"
 
 namespace mink {
 
@@ -28,13 +30,16 @@ struct ShapeRayHit {
 
 /// @brief What World::advance did.
 struct AdvanceResult {
-  int steps = 0;   ///< fixed steps run by this call
-  Real alpha = 0;  ///< leftover time / time step, in [0, 1): blend previous and current poses
+  int steps = 0;  ///< fixed steps run by this call
+  /// Leftover time / time step, in [0, 1): World::interpolated_pose(id, alpha) blends each
+  /// body's pose before and after the last step by it, for smooth drawing between steps.
+  Real alpha = 0;
 };
 
-/// A 2D rigid-body world: bodies with convex shapes, a sweep-and-prune broadphase, GJK-based
-/// manifolds and a soft-step contact solver. Single threaded; every call is deterministic.
-/// Any id argument that does not name a live object throws StaleIdError naming the id.
+/// A 2D rigid-body world: bodies with shapes of every kind (circles, capsules, segments, chains,
+/// rounded polygons), a sweep-and-prune broadphase, GJK-based manifolds and a soft-step solver.
+/// Every call is deterministic. Any id argument that does not name a live object of this world
+/// (ids carry their world) throws StaleIdError naming the id.
 class World {
  public:
   /// @brief Creates an empty world.
@@ -65,9 +70,14 @@ class World {
   BodyId create_body(const BodyDef& def);
   /// @brief Destroys the body and all its shapes; `id` and their ids become stale.
   void destroy_body(BodyId id);
-  /// @brief Hulls `def.points` (body-local) and attaches the shape; the body's mass is updated.
-  /// @throws StaleIdError for a dead `body`, and whatever make_shape_hull throws for `def`.
+  /// @brief Attaches a shape (a polygon's `points` are hulled here); the body's mass is updated.
+  /// @throws StaleIdError for a dead `body`; InvalidArgumentError (or a hull error) for a bad
+  /// `def`, and for a chain (use create_chain).
   ShapeId create_shape(BodyId body, const ShapeDef& def);
+  /// @brief Attaches a chain: one one-sided segment shape per chain edge, in order, each with
+  /// its neighbours as ghost vertices. `def.type` must be ShapeType::chain.
+  /// @throws StaleIdError for a dead `body`; InvalidArgumentError for a bad `def`.
+  std::vector<ShapeId> create_chain(BodyId body, const ShapeDef& def);
   /// @brief Detaches and destroys the shape; `id` becomes stale.
   void destroy_shape(ShapeId id);
   /// @brief True when `id` names a live body of this world.
@@ -98,7 +108,7 @@ class World {
   Vec2 world_center(BodyId id) const;
   /// @brief Centre of mass in body-local coordinates.
   Vec2 local_center(BodyId id) const;
-  /// @brief Velocity of the body origin, world frame (m/s).
+  /// @brief Velocity of the centre of mass, world frame (m/s).
   Vec2 linear_velocity(BodyId id) const;
   /// @brief Angular velocity in rad/s, counter-clockwise positive.
   Real angular_velocity(BodyId id) const;
@@ -120,6 +130,19 @@ class World {
   std::uint64_t user_data(BodyId id) const;
   /// @brief The body's live shapes.
   std::vector<ShapeId> body_shapes(BodyId id) const;
+  /// @brief False while the body is disabled (kept, but neither simulated nor collided).
+  bool is_enabled(BodyId id) const;
+  /// @brief True when the body never rotates.
+  bool fixed_rotation(BodyId id) const;
+  /// @brief True when the body is a bullet (continuous collision against dynamic bodies too).
+  bool is_bullet(BodyId id) const;
+  /// @brief Mass, centre (body-local) and rotational inertia in force.
+  MassData mass_data(BodyId id) const;
+  /// @brief The body's pose blended between before and after the last step: `alpha` 0 gives
+  /// the pose before it, 1 the current one (see AdvanceResult::alpha).
+  Pose interpolated_pose(BodyId id, Real alpha) const;
+  /// @brief The body's contacts that have manifold points, in contact order.
+  std::vector<ContactData> body_contacts(BodyId id) const;
 
   /// @}
 
@@ -131,7 +154,7 @@ class World {
   /// @brief Moves the body origin to `position` (world) at `angle` (radians) without velocity
   /// (a teleport).
   void set_transform(BodyId id, const Vec2& position, Real angle);
-  /// @brief Velocity of the body origin, world frame (m/s).
+  /// @brief Velocity of the centre of mass, world frame (m/s).
   void set_linear_velocity(BodyId id, const Vec2& velocity);
   /// @brief Angular velocity in rad/s, counter-clockwise positive.
   void set_angular_velocity(BodyId id, Real velocity);
@@ -144,6 +167,22 @@ class World {
   /// Wakes the body, or puts a dynamic body to sleep (its velocity is zeroed). No effect on
   /// static bodies.
   void set_awake(BodyId id, bool awake);
+  /// @brief Static, kinematic or dynamic; mass is recomputed, contacts are re-made next step.
+  void set_body_type(BodyId id, BodyType type);
+  /// @brief Disables (removes from simulation and collision, keeping it) or enables a body.
+  void set_enabled(BodyId id, bool enabled);
+  /// @brief Locks (or unlocks) rotation; the angular velocity is zeroed when locking.
+  void set_fixed_rotation(BodyId id, bool fixed);
+  /// @brief Marks the body as a bullet (continuous collision against dynamic bodies too).
+  void set_bullet(BodyId id, bool bullet);
+  /// Sets a kinematic body's velocities so that it reaches `position`, `angle` at the end of
+  /// the next step of `time_step` seconds (moving platforms that follow a path).
+  /// @throws InvalidArgumentError for a body that is not kinematic or non-finite arguments.
+  void set_target_transform(BodyId id, const Vec2& position, Real angle, Real time_step);
+  /// Overrides the mass properties the shapes give (a dynamic body only); kept until a shape
+  /// is added or removed or set_shape_density is called.
+  /// @throws InvalidArgumentError for a negative or non-finite mass or inertia.
+  void set_mass_data(BodyId id, const MassData& mass);
 
   /// @}
 
@@ -152,8 +191,29 @@ class World {
 
   /// @brief The body the shape is attached to.
   BodyId shape_body(ShapeId id) const;
-  /// @brief The shape's hull, in body-local coordinates (scale already applied).
+  /// @brief What kind of shape it is (a chain's segments report ShapeType::chain).
+  ShapeType shape_type(ShapeId id) const;
+  /// @brief The shape's geometry in body-local coordinates.
+  const ShapeGeometry& shape_geometry(ShapeId id) const;
+  /// @brief A polygon's hull (its core), in body-local coordinates (scale already applied).
+  /// @throws InvalidArgumentError when the shape is not a polygon.
   const ConvexHull& shape_hull(ShapeId id) const;
+  /// @brief Circle and capsule radius, polygon rounding; 0 for segments and chains.
+  Real shape_radius(ShapeId id) const;
+  /// @brief The shape's collision filter.
+  const Filter& shape_filter(ShapeId id) const;
+  /// @brief True for a sensor.
+  bool is_sensor(ShapeId id) const;
+  /// @brief As given in ShapeDef::user_data.
+  std::uint64_t shape_user_data(ShapeId id) const;
+  /// @brief Changes the density; the body's mass is recomputed.
+  void set_shape_density(ShapeId id, Real density);
+  /// @brief Changes the friction of the shape and of its existing contacts.
+  void set_shape_friction(ShapeId id, Real friction);
+  /// @brief Changes the restitution of the shape and of its existing contacts.
+  void set_shape_restitution(ShapeId id, Real restitution);
+  /// @brief Changes the filter; the shape's pairs are tested again in the next step.
+  void set_shape_filter(ShapeId id, const Filter& filter);
   /// @brief As given in ShapeDef::density (kg/m^2).
   Real shape_density(ShapeId id) const;
   /// @brief As given in ShapeDef::friction.
@@ -172,6 +232,10 @@ class World {
 
   /// @brief Runs exactly one fixed step of WorldDef::time_step; events then cover that step.
   void step();  ///< exactly one fixed step
+  /// @brief Runs one step of `time_step` seconds with `substeps` substeps (for callers that
+  /// drive their own clock); events then cover that step.
+  /// @throws InvalidArgumentError unless time_step > 0 and finite and substeps >= 1.
+  void step(Real time_step, int substeps);
   /// Runs the whole steps that fit in the accumulated time (at most max_steps_per_advance).
   /// Events then cover every step the call ran.
   /// @param frame_seconds wall time since the last call, added to the accumulated time
@@ -191,6 +255,14 @@ class World {
   std::span<const ContactBeginEvent> contact_begin_events() const noexcept;
   /// @brief Shape pairs that stopped touching (or lost a shape).
   std::span<const ContactEndEvent> contact_end_events() const noexcept;
+  /// @brief Contacts that began faster than WorldDef::hit_event_threshold.
+  std::span<const ContactHitEvent> contact_hit_events() const noexcept;
+  /// @brief Shapes that began overlapping a sensor, in (sensor, visitor) slot order.
+  std::span<const SensorBeginEvent> sensor_begin_events() const noexcept;
+  /// @brief Shapes that stopped overlapping a sensor, in (sensor, visitor) slot order.
+  std::span<const SensorEndEvent> sensor_end_events() const noexcept;
+  /// @brief Bodies that moved (were simulated), in body slot order.
+  std::span<const BodyMoveEvent> body_move_events() const noexcept;
   /// @brief Pair, contact, island and solver counts.
   const StepCounters& counters() const noexcept;
   /// @brief Wall time per phase, in milliseconds.
@@ -203,9 +275,9 @@ class World {
   /// order; all coordinates are world.
   /// @{
 
-  /// @brief Shapes whose hull overlaps `box`.
+  /// @brief Shapes that overlap `box`.
   std::vector<ShapeId> query_aabb(const Aabb& box) const;
-  /// @brief Shapes whose hull contains `point` (boundary included).
+  /// @brief Solid shapes that contain `point` (boundary included).
   std::vector<ShapeId> query_point(const Vec2& point) const;
   /// @brief Closest hit along origin -> origin + translation, if any.
   std::optional<ShapeRayHit> ray_cast(const Vec2& origin, const Vec2& translation) const;
@@ -216,7 +288,7 @@ class World {
   void draw(DebugDraw& draw) const;
 
  private:
-  void run_step(bool clear_events);
+  void run_step(bool clear_events, Real time_step, int substeps);
   std::unique_ptr<WorldState> state_;
 };
 

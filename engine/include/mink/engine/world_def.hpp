@@ -25,6 +25,8 @@ struct WorldDef {
   Real contact_push_max_velocity = 3;
   /// Approach speeds below this do not bounce, whatever the restitution.
   Real restitution_threshold = 1;
+  /// Contacts that close faster than this (m/s) report a hit event, when a shape asks for them.
+  Real hit_event_threshold = 1;
   /// Allowed overlap; contacts are generated this many times four before shapes touch.
   Real linear_slop = 0.005;
   Real max_linear_speed = 400;           ///< m/s; faster bodies are clamped to it

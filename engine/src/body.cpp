@@ -1,0 +1,398 @@
+// Bodies: mass from shapes, waking, and the body half of the World API.
+
+#include "body.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "mink/error.hpp"
+#include "world_state.hpp"
+
+namespace mink {
+
+using detail::Body;
+
+namespace {
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw InvalidArgumentError(what);
+}
+
+bool finite(const Vec2& v) {
+  return std::isfinite(v.x()) && std::isfinite(v.y());
+}
+
+void check_body_def(const BodyDef& def) {
+  require(finite(def.position), "BodyDef.position must be finite");
+  require(std::isfinite(def.angle), "BodyDef.angle must be finite");
+  require(finite(def.linear_velocity), "BodyDef.linear_velocity must be finite");
+  require(std::isfinite(def.angular_velocity), "BodyDef.angular_velocity must be finite");
+  require(std::isfinite(def.linear_damping) && def.linear_damping >= 0,
+          "BodyDef.linear_damping must be finite and non-negative");
+  require(std::isfinite(def.angular_damping) && def.angular_damping >= 0,
+          "BodyDef.angular_damping must be finite and non-negative");
+  require(std::isfinite(def.gravity_scale), "BodyDef.gravity_scale must be finite");
+}
+
+}  // namespace
+
+void WorldState::wake(Body& b) {
+  if (b.type == BodyType::static_body) return;
+  b.awake = true;
+  b.sleep_time = 0;
+}
+
+// Mass, centre of mass and inertia from the shapes (compute_mass), density-weighted, unless
+// set_mass_data overrides them.
+void WorldState::update_mass(Body& b) {
+  b.mass = b.inv_mass = b.inertia = b.inv_inertia = 0;
+  b.local_center = Vec2(0, 0);
+  b.extent = 0;
+  if (b.type == BodyType::dynamic) {
+    if (b.mass_override) {
+      b.mass = b.override_mass.mass;
+      b.local_center = b.override_mass.center;
+      b.inertia = b.override_mass.rotational_inertia;
+    } else {
+      Real mass = 0;
+      Vec2 weighted(0, 0);
+      Real inertia_about_origin = 0;
+      for (std::uint32_t s : b.shapes) {
+        const detail::Shape& shape = shapes[s];
+        if (shape.density == 0) continue;
+        const MassData m = compute_mass(shape.geometry, shape.density);
+        mass += m.mass;
+        weighted += m.mass * m.center;
+        inertia_about_origin += m.rotational_inertia + m.mass * m.center.squaredNorm();
+      }
+      if (mass > 0) {
+        b.mass = mass;
+        b.local_center = weighted / mass;
+        b.inertia = inertia_about_origin - mass * b.local_center.squaredNorm();
+      }
+    }
+    if (b.mass > 0) {
+      b.inv_mass = 1 / b.mass;
+    } else {
+      // A dynamic body needs mass to respond to contacts; Box2D's convention: unit mass, no
+      // rotational inertia.
+      b.mass = 1;
+      b.inv_mass = 1;
+      b.inertia = 0;
+    }
+    if (b.fixed_rotation) b.inertia = 0;
+    b.inv_inertia = b.inertia > 0 ? 1 / b.inertia : 0;
+  }
+  for (std::uint32_t s : b.shapes) {
+    b.extent = std::max(b.extent, detail::shape_extent(shapes[s].geometry, b.local_center));
+  }
+  const Vec2 old_center = b.center;
+  b.center = b.origin + b.rotation.apply(b.local_center);
+  // Material points keep their velocity when the centre moves within the body.
+  const Vec2 shift = b.center - old_center;
+  b.velocity += b.angular_velocity * Vec2(-shift.y(), shift.x());
+}
+
+BodyId World::create_body(const BodyDef& def) {
+  check_body_def(def);
+  WorldState& w = *state_;
+  const std::uint32_t index = w.bodies.allocate();
+  Body& b = w.bodies[index];
+  b.type = def.type;
+  b.origin = def.position;
+  b.center = def.position;
+  b.rotation = Rotation::from_angle(def.angle);
+  if (def.type != BodyType::static_body) {
+    b.velocity = def.linear_velocity;
+    b.angular_velocity = def.fixed_rotation ? 0 : def.angular_velocity;
+  }
+  b.linear_damping = def.linear_damping;
+  b.angular_damping = def.angular_damping;
+  b.gravity_scale = def.gravity_scale;
+  b.allow_sleep = def.allow_sleep;
+  b.awake = def.type != BodyType::static_body && def.awake;
+  b.sleep_time = b.awake ? 0 : w.def.time_to_sleep;
+  b.user_data = def.user_data;
+  b.enabled = def.enabled;
+  b.fixed_rotation = def.fixed_rotation;
+  b.bullet = def.bullet;
+  if (def.type == BodyType::dynamic) b.mass = b.inv_mass = 1;
+  return w.body_id(index);
+}
+
+void World::destroy_body(BodyId id) {
+  Body& b = state_->body(id);
+  while (!b.shapes.empty()) destroy_shape(state_->shape_id(b.shapes.back()));
+  state_->bodies.release(id.index);
+}
+
+bool World::is_valid(BodyId id) const noexcept {
+  return state_->bodies.valid(id, state_->serial);
+}
+
+std::size_t World::body_count() const noexcept {
+  return state_->bodies.live();
+}
+
+std::vector<BodyId> World::bodies() const {
+  std::vector<BodyId> ids;
+  ids.reserve(state_->bodies.live());
+  for (std::uint32_t i = 0; i < state_->bodies.size(); ++i) {
+    if (state_->bodies[i].alive) ids.push_back(state_->body_id(i));
+  }
+  return ids;
+}
+
+BodyType World::body_type(BodyId id) const {
+  return state_->body(id).type;
+}
+Vec2 World::position(BodyId id) const {
+  return state_->body(id).origin;
+}
+Real World::angle(BodyId id) const {
+  return state_->body(id).rotation.angle();
+}
+Pose World::pose(BodyId id) const {
+  return state_->body(id).pose();
+}
+Vec2 World::world_center(BodyId id) const {
+  return state_->body(id).center;
+}
+Vec2 World::local_center(BodyId id) const {
+  return state_->body(id).local_center;
+}
+Vec2 World::linear_velocity(BodyId id) const {
+  return state_->body(id).velocity;
+}
+Real World::angular_velocity(BodyId id) const {
+  return state_->body(id).angular_velocity;
+}
+Real World::mass(BodyId id) const {
+  return state_->body(id).mass;
+}
+Real World::rotational_inertia(BodyId id) const {
+  return state_->body(id).inertia;
+}
+Real World::linear_damping(BodyId id) const {
+  return state_->body(id).linear_damping;
+}
+Real World::angular_damping(BodyId id) const {
+  return state_->body(id).angular_damping;
+}
+Real World::gravity_scale(BodyId id) const {
+  return state_->body(id).gravity_scale;
+}
+bool World::allow_sleep(BodyId id) const {
+  return state_->body(id).allow_sleep;
+}
+bool World::is_awake(BodyId id) const {
+  return state_->body(id).awake;
+}
+std::uint64_t World::user_data(BodyId id) const {
+  return state_->body(id).user_data;
+}
+bool World::is_enabled(BodyId id) const {
+  return state_->body(id).enabled;
+}
+bool World::fixed_rotation(BodyId id) const {
+  return state_->body(id).fixed_rotation;
+}
+bool World::is_bullet(BodyId id) const {
+  return state_->body(id).bullet;
+}
+
+MassData World::mass_data(BodyId id) const {
+  const Body& b = state_->body(id);
+  return {b.mass, b.local_center, b.inertia};
+}
+
+Pose World::interpolated_pose(BodyId id, Real alpha) const {
+  require(std::isfinite(alpha), "interpolated_pose of " + to_string(id) + ": alpha must be finite");
+  const Body& b = state_->body(id);
+  if (b.moved_step + 1 != state_->step_count) return b.pose();  // did not move in the last step
+  const Real a = std::clamp(alpha, Real{0}, Real{1});
+  Pose pose;
+  pose.position = (1 - a) * b.previous_origin + a * b.origin;
+  // Blend the angle along the shorter way round.
+  const Rotation& r0 = b.previous_rotation;
+  const Rotation& r1 = b.rotation;
+  const Real turn = std::atan2(r0.cos * r1.sin - r0.sin * r1.cos, r0.cos * r1.cos + r0.sin * r1.sin);
+  pose.rotation = Rotation::from_angle(r0.angle() + a * turn);
+  return pose;
+}
+
+std::vector<ShapeId> World::body_shapes(BodyId id) const {
+  std::vector<ShapeId> ids;
+  for (std::uint32_t s : state_->body(id).shapes) ids.push_back(state_->shape_id(s));
+  return ids;
+}
+
+std::vector<ContactData> World::body_contacts(BodyId id) const {
+  const WorldState& w = *state_;
+  w.body(id);
+  std::vector<ContactData> found;
+  for (const detail::Contact& c : w.contacts) {
+    if ((c.body_a != id.index && c.body_b != id.index) || c.manifold.point_count == 0) continue;
+    found.push_back({w.shape_id(c.shape_a), w.shape_id(c.shape_b), c.manifold});
+  }
+  return found;
+}
+
+void World::set_transform(BodyId id, const Vec2& position, Real angle) {
+  require(finite(position) && std::isfinite(angle),
+          "set_transform of " + to_string(id) + ": position and angle must be finite");
+  WorldState& w = *state_;
+  Body& b = w.body(id);
+  b.origin = position;
+  b.rotation = Rotation::from_angle(angle);
+  b.center = b.origin + b.rotation.apply(b.local_center);
+  for (std::uint32_t s : b.shapes) {
+    detail::Shape& shape = w.shapes[s];
+    w.update_shape_aabb(shape, b, 0);
+    if (shape.proxy != null_proxy) w.broadphase.move_proxy(shape.proxy, shape.aabb);
+  }
+  w.wake(b);
+}
+
+void World::set_linear_velocity(BodyId id, const Vec2& velocity) {
+  require(finite(velocity), "set_linear_velocity of " + to_string(id) + ": must be finite");
+  Body& b = state_->body(id);
+  if (b.type == BodyType::static_body) return;
+  b.velocity = velocity;
+  state_->wake(b);
+}
+
+void World::set_angular_velocity(BodyId id, Real velocity) {
+  require(std::isfinite(velocity), "set_angular_velocity of " + to_string(id) + ": must be finite");
+  Body& b = state_->body(id);
+  if (b.type == BodyType::static_body || b.fixed_rotation) return;
+  b.angular_velocity = velocity;
+  state_->wake(b);
+}
+
+void World::apply_force(BodyId id, const Vec2& force, const Vec2& world_point) {
+  require(finite(force) && finite(world_point),
+          "apply_force to " + to_string(id) + ": force and point must be finite");
+  Body& b = state_->body(id);
+  if (b.type != BodyType::dynamic) return;
+  b.force += force;
+  const Vec2 r = world_point - b.center;
+  b.torque += r.x() * force.y() - r.y() * force.x();
+  state_->wake(b);
+}
+
+void World::apply_torque(BodyId id, Real torque) {
+  require(std::isfinite(torque), "apply_torque to " + to_string(id) + ": must be finite");
+  Body& b = state_->body(id);
+  if (b.type != BodyType::dynamic) return;
+  b.torque += torque;
+  state_->wake(b);
+}
+
+void World::apply_linear_impulse(BodyId id, const Vec2& impulse, const Vec2& world_point) {
+  require(finite(impulse) && finite(world_point),
+          "apply_linear_impulse to " + to_string(id) + ": impulse and point must be finite");
+  Body& b = state_->body(id);
+  if (b.type != BodyType::dynamic) return;
+  b.velocity += b.inv_mass * impulse;
+  const Vec2 r = world_point - b.center;
+  b.angular_velocity += b.inv_inertia * (r.x() * impulse.y() - r.y() * impulse.x());
+  state_->wake(b);
+}
+
+void World::set_awake(BodyId id, bool awake) {
+  Body& b = state_->body(id);
+  if (b.type == BodyType::static_body) return;
+  if (awake) {
+    state_->wake(b);
+  } else if (b.type == BodyType::dynamic) {
+    b.awake = false;
+    b.sleep_time = state_->def.time_to_sleep;
+    b.velocity = Vec2(0, 0);
+    b.angular_velocity = 0;
+  }
+}
+
+void World::set_body_type(BodyId id, BodyType type) {
+  WorldState& w = *state_;
+  Body& b = w.body(id);
+  if (b.type == type) return;
+  b.type = type;
+  if (type == BodyType::static_body) {
+    b.velocity = Vec2(0, 0);
+    b.angular_velocity = 0;
+    b.awake = false;
+  } else {
+    b.awake = true;
+  }
+  b.sleep_time = 0;
+  w.update_mass(b);
+  // The broadphase files static and moving proxies apart, and contacts depend on the types.
+  for (std::uint32_t s : b.shapes) w.refresh_proxy(s);
+}
+
+void World::set_enabled(BodyId id, bool enabled) {
+  WorldState& w = *state_;
+  Body& b = w.body(id);
+  if (b.enabled == enabled) return;
+  b.enabled = enabled;
+  for (std::uint32_t s : b.shapes) {
+    w.destroy_shape_contacts(s);
+    w.destroy_proxy(w.shapes[s]);
+    if (enabled) w.create_proxy(s);
+  }
+  w.wake(b);
+}
+
+void World::set_fixed_rotation(BodyId id, bool fixed) {
+  WorldState& w = *state_;
+  Body& b = w.body(id);
+  if (b.fixed_rotation == fixed) return;
+  b.fixed_rotation = fixed;
+  if (fixed) b.angular_velocity = 0;
+  w.update_mass(b);
+  w.wake(b);
+}
+
+void World::set_bullet(BodyId id, bool bullet) {
+  state_->body(id).bullet = bullet;
+}
+
+void World::set_target_transform(BodyId id, const Vec2& position, Real angle, Real time_step) {
+  require(finite(position) && std::isfinite(angle),
+          "set_target_transform of " + to_string(id) + ": position and angle must be finite");
+  require(std::isfinite(time_step) && time_step > 0,
+          "set_target_transform of " + to_string(id) + ": time_step must be positive and finite");
+  WorldState& w = *state_;
+  Body& b = w.body(id);
+  require(b.type == BodyType::kinematic,
+          "set_target_transform of " + to_string(id) + ": the body is " +
+              std::string(to_string(b.type)) + ", not kinematic");
+  const Rotation target = Rotation::from_angle(angle);
+  const Vec2 target_center = position + target.apply(b.local_center);
+  b.velocity = (target_center - b.center) / time_step;
+  // The turn to the target along the shorter way round.
+  const Rotation& now = b.rotation;
+  const Real turn = std::atan2(now.cos * target.sin - now.sin * target.cos,
+                               now.cos * target.cos + now.sin * target.sin);
+  b.angular_velocity = turn / time_step;
+  w.wake(b);
+}
+
+void World::set_mass_data(BodyId id, const MassData& mass) {
+  require(std::isfinite(mass.mass) && mass.mass >= 0 && std::isfinite(mass.rotational_inertia) &&
+              mass.rotational_inertia >= 0 && finite(mass.center),
+          "set_mass_data of " + to_string(id) +
+              ": mass and inertia must be finite and non-negative, the centre finite");
+  WorldState& w = *state_;
+  Body& b = w.body(id);
+  if (b.type != BodyType::dynamic) return;
+  b.mass_override = true;
+  b.override_mass = mass;
+  w.update_mass(b);
+  w.wake(b);
+}
+
+}  // namespace mink

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "mink/engine/body_def.hpp"
+#include "mink/narrowphase/pose.hpp"
+#include "mink/narrowphase/shape_geometry.hpp"
+
+namespace mink::detail {
+
+// A body record. What every step reads sits in the first two cache lines (pose, velocities,
+// inverse masses, flags); the rest is touched by the API and the sleep pass only.
+struct alignas(64) Body {
+  // Pose: centre of mass and rotation are the state; the origin follows from them.
+  Vec2 center{0, 0};
+  Rotation rotation{};
+  Vec2 origin{0, 0};
+  Vec2 velocity{0, 0};  // of the centre of mass
+  Real angular_velocity = 0;
+  Real inv_mass = 0, inv_inertia = 0;
+  Real extent = 0;  // farthest shape point (radius included) from the centre of mass
+  BodyType type = BodyType::static_body;
+  bool alive = false;
+  bool awake = true;
+  bool allow_sleep = true;
+  bool enabled = true;
+  bool fixed_rotation = false;
+  bool bullet = false;
+  bool mass_override = false;  // set_mass_data's values stand until the shapes change
+  MassData override_mass;
+
+  Vec2 local_center{0, 0};
+  Vec2 force{0, 0};
+  Real torque = 0;
+  Real mass = 0, inertia = 0;
+  Real linear_damping = 0, angular_damping = 0, gravity_scale = 1;
+  Real sleep_time = 0;
+  std::uint64_t user_data = 0;
+  std::vector<std::uint32_t> shapes;
+  std::uint32_t generation = 0;
+  // The pose before the step numbered moved_step (for interpolated_pose).
+  Vec2 previous_origin{0, 0};
+  Rotation previous_rotation{};
+  std::uint64_t moved_step = ~std::uint64_t{0};
+
+  Pose pose() const { return {origin, rotation}; }
+};
+
+// Moves in a step: awake, enabled and not static.
+inline bool moves(const Body& b) {
+  return b.type != BodyType::static_body && b.awake && b.enabled;
+}
+
+}  // namespace mink::detail

@@ -1,0 +1,219 @@
+// Contacts: made when the broadphase reports a pair that may touch, updated by the
+// narrowphase every step, ended with their pair; begin and end events.
+
+#include "contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mink/narrowphase/collide.hpp"
+#include "world_state.hpp"
+
+namespace mink {
+
+using detail::Body;
+using detail::Contact;
+using detail::Shape;
+
+void WorldState::destroy_contact(std::uint32_t index) {
+  Contact& c = contacts[index];
+  if (c.touching && c.events) end_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b)});
+  contact_index.erase(detail::pair_key(c.proxy_a, c.proxy_b));
+  const std::uint32_t last = static_cast<std::uint32_t>(contacts.size() - 1);
+  if (index != last) {
+    contacts[index] = contacts[last];
+    contact_index[detail::pair_key(contacts[index].proxy_a, contacts[index].proxy_b)] = index;
+  }
+  contacts.pop_back();
+}
+
+void WorldState::destroy_shape_contacts(std::uint32_t shape_index) {
+  // Destruction is rare: a scan keeps contacts free of per-shape lists.
+  for (std::uint32_t i = static_cast<std::uint32_t>(contacts.size()); i-- > 0;) {
+    Contact& c = contacts[i];
+    if (c.shape_a != shape_index && c.shape_b != shape_index) continue;
+    wake(bodies[c.body_a]);
+    wake(bodies[c.body_b]);
+    destroy_contact(i);
+  }
+}
+
+// Sensors never make contacts (they are tested in the sensor pass), and neither do two
+// shapes of one body, two bodies that cannot move, or shapes their filters keep apart.
+bool WorldState::should_make_contact(std::uint32_t sa, std::uint32_t sb) const {
+  const Shape& shape_a = shapes[sa];
+  const Shape& shape_b = shapes[sb];
+  if (shape_a.sensor || shape_b.sensor || shape_a.body == shape_b.body) return false;
+  const Body& body_a = bodies[shape_a.body];
+  const Body& body_b = bodies[shape_b.body];
+  if (body_a.type != BodyType::dynamic && body_b.type != BodyType::dynamic) return false;
+  if (shape_a.type == ShapeType::chain && shape_b.type == ShapeType::chain) return false;
+  return should_collide(shape_a.filter, shape_b.filter);
+}
+
+void WorldState::update_pairs() {
+  for (ProxyId proxy : pending_proxy_destroys) broadphase.destroy_proxy(proxy);
+  pending_proxy_destroys.clear();
+  pair_events.begun.clear();
+  pair_events.ended.clear();
+  broadphase.update_pairs(pair_events);
+
+  for (const ProxyPair& pair : pair_events.ended) {
+    const auto found = contact_index.find(detail::pair_key(pair.a, pair.b));
+    if (found != contact_index.end()) destroy_contact(found->second);
+  }
+  for (const ProxyPair& pair : pair_events.begun) {
+    const auto sa = static_cast<std::uint32_t>(broadphase.user_data(pair.a));
+    const auto sb = static_cast<std::uint32_t>(broadphase.user_data(pair.b));
+    const Shape& shape_a = shapes[sa];
+    const Shape& shape_b = shapes[sb];
+    if (!shape_a.alive || !shape_b.alive || shape_a.proxy != pair.a || shape_b.proxy != pair.b) {
+      continue;
+    }
+    if (!should_make_contact(sa, sb)) continue;
+    const std::uint64_t key = detail::pair_key(pair.a, pair.b);
+    if (contact_index.contains(key)) continue;
+    Contact c;
+    c.shape_a = sa;
+    c.shape_b = sb;
+    c.body_a = shape_a.body;
+    c.body_b = shape_b.body;
+    c.proxy_a = pair.a;
+    c.proxy_b = pair.b;
+    c.friction = detail::mix_friction(shape_a.friction, shape_b.friction);
+    c.restitution = detail::mix_restitution(shape_a.restitution, shape_b.restitution);
+    c.events = shape_a.contact_events && shape_b.contact_events;
+    c.hit_events = shape_a.hit_events || shape_b.hit_events;
+    c.sharp_polygons = shape_a.type == ShapeType::polygon && shape_b.type == ShapeType::polygon &&
+                       detail::shape_radius(shape_a.geometry) == 0 &&
+                       detail::shape_radius(shape_b.geometry) == 0;
+    contact_index.emplace(key, static_cast<std::uint32_t>(contacts.size()));
+    contacts.push_back(c);
+  }
+}
+
+namespace {
+
+// The fastest normal approach over the manifold's points, from the velocities before the
+// solve (a hit is judged by how fast the shapes met, not by what the solver left).
+void measure_approach(Contact& c, const Body& a, const Body& b) {
+  c.approach_speed = 0;
+  for (int j = 0; j < c.manifold.point_count; ++j) {
+    const Vec2& p = c.manifold.points[static_cast<std::size_t>(j)].point;
+    const Vec2 ra = p - a.center, rb = p - b.center;
+    const Vec2 va = a.velocity + a.angular_velocity * Vec2(-ra.y(), ra.x());
+    const Vec2 vb = b.velocity + b.angular_velocity * Vec2(-rb.y(), rb.x());
+    const Real approach = -(vb - va).dot(c.manifold.normal);
+    if (approach > c.approach_speed) {
+      c.approach_speed = approach;
+      c.approach_point = p;
+    }
+  }
+}
+
+}  // namespace
+
+// Narrowphase for every contact with a moving body. A pair whose relative pose has moved
+// less than a tenth of the linear slop since its manifold was computed keeps the manifold's
+// features and only has its separations measured again (as persistent-manifold engines do):
+// resting stacks then cost a few multiplies per point instead of a collision.
+void WorldState::collide() {
+  const Real touching_distance = 4 * def.linear_slop;
+  const bool reuse = def.reuse_manifolds;
+  const Real reuse_tolerance = 0.1 * def.linear_slop;
+  for (Contact& c : contacts) {
+    const Body& body_a = bodies[c.body_a];
+    const Body& body_b = bodies[c.body_b];
+    if (!detail::moves(body_a) && !detail::moves(body_b)) continue;  // asleep or static
+    const Shape& shape_a = shapes[c.shape_a];
+    const Shape& shape_b = shapes[c.shape_b];
+    const bool was_touching = c.touching;
+    const Pose pose_a = body_a.pose(), pose_b = body_b.pose();
+    const Rotation& ra = pose_a.rotation;
+    const Pose relative = relative_pose(pose_a, pose_b);
+    detail::ManifoldCache& cache = c.cache;
+    bool same_features = false;
+    if (reuse && cache.valid) {
+      const Rotation& then = cache.relative.rotation;
+      const Rotation& now = relative.rotation;
+      const Real turn = std::abs(then.cos * now.sin - then.sin * now.cos);  // sin of the change
+      const Vec2 moved = relative.position - cache.relative.position;
+      const Real shift = std::abs(moved.x()) + std::abs(moved.y());
+      same_features = shift + turn * (body_a.extent + body_b.extent) < reuse_tolerance;
+    }
+
+    if (same_features) {
+      // Move the stored surface points with their bodies and measure again; the impulses stay.
+      const Vec2 normal = ra.apply(cache.normal);
+      c.manifold.normal = normal;
+      for (int j = 0; j < c.manifold.point_count; ++j) {
+        const Vec2 on_a = pose_a.apply(cache.on_a[j]);
+        const Vec2 on_b = pose_b.apply(cache.on_b[j]);
+        ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+        p.separation = normal.dot(on_b - on_a);
+        p.point = 0.5 * (on_a + on_b);
+      }
+    } else {
+      const Manifold old = c.manifold;
+      const Real old_normal[2] = {c.normal_impulse[0], c.normal_impulse[1]};
+      const Real old_tangent[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
+      if (!shape_a.aabb.overlaps(shape_b.aabb)) {
+        c.manifold.point_count = 0;
+      } else {
+        // Speculative distance: the base margin plus how far the pair may close this step.
+        const Vec2 dv = body_b.velocity - body_a.velocity;
+        const Real closing = dv.norm() + std::abs(body_a.angular_velocity) * body_a.extent +
+                             std::abs(body_b.angular_velocity) * body_b.extent;
+        const Real speculative = touching_distance + dt * closing;
+        if (c.sharp_polygons) {
+          c.manifold = collide_hulls(std::get<RoundedPolygon>(shape_a.geometry).hull, pose_a,
+                                     std::get<RoundedPolygon>(shape_b.geometry).hull, pose_b,
+                                     speculative);
+        } else {
+          c.manifold = collide_shapes(shape_a.geometry, pose_a, shape_b.geometry, pose_b,
+                                      speculative);
+        }
+      }
+      cache.valid = c.manifold.point_count > 0;
+      if (cache.valid) {
+        cache.relative = relative;
+        const Vec2 normal = c.manifold.normal;
+        cache.normal = ra.apply_inverse(normal);
+        for (int j = 0; j < c.manifold.point_count; ++j) {
+          const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+          cache.on_a[j] = pose_a.apply_inverse(p.point - 0.5 * p.separation * normal);
+          cache.on_b[j] = pose_b.apply_inverse(p.point + 0.5 * p.separation * normal);
+        }
+      }
+      // Warm start: carry the impulses of the point with the same feature id.
+      for (int j = 0; j < c.manifold.point_count; ++j) {
+        const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+        c.normal_impulse[j] = 0;
+        c.tangent_impulse[j] = 0;
+        for (int k = 0; k < old.point_count; ++k) {
+          if (old.points[static_cast<std::size_t>(k)].id == p.id) {
+            c.normal_impulse[j] = old_normal[k];
+            c.tangent_impulse[j] = old_tangent[k];
+            break;
+          }
+        }
+      }
+    }
+    if (c.hit_events) measure_approach(c, body_a, body_b);
+
+    bool touching = false;
+    for (int j = 0; j < c.manifold.point_count; ++j) {
+      const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+      touching = touching || p.separation < touching_distance;
+    }
+    c.touching = touching;
+    if (!c.events) continue;
+    if (touching && !was_touching) {
+      begin_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b), c.manifold});
+    } else if (!touching && was_touching) {
+      end_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b)});
+    }
+  }
+}
+
+}  // namespace mink

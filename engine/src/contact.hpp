@@ -1,0 +1,50 @@
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "mink/broadphase/broadphase.hpp"
+#include "mink/narrowphase/manifold.hpp"
+
+namespace mink::detail {
+
+// Where a manifold was computed, so it can be carried along while the pair barely moves: the
+// pose of B in A's frame, the normal in A's frame, each point's surface points in their own
+// body's frame.
+struct ManifoldCache {
+  Pose relative;
+  Vec2 normal{0, 0};
+  Vec2 on_a[2] = {Vec2(0, 0), Vec2(0, 0)};
+  Vec2 on_b[2] = {Vec2(0, 0), Vec2(0, 0)};
+  bool valid = false;
+};
+
+// A pair of shapes whose boxes overlap and that may touch. Ordered by use: what building
+// constraints reads comes first, the manifold cache (collide only) last.
+struct Contact {
+  Manifold manifold;
+  std::uint32_t body_a = 0, body_b = 0;
+  Real normal_impulse[2] = {0, 0};
+  Real tangent_impulse[2] = {0, 0};
+  Real friction = 0, restitution = 0;
+  std::uint32_t shape_a = 0, shape_b = 0;
+  ProxyId proxy_a = null_proxy, proxy_b = null_proxy;
+  bool touching = false;
+  bool events = true;       // begin/end events (both shapes allow them)
+  bool hit_events = false;  // either shape asks for hit events
+  bool sharp_polygons = false;  // both are polygons without rounding: the direct hull path
+  // Fastest normal approach over the points before the solve, and where (hit events only).
+  Real approach_speed = 0;
+  Vec2 approach_point{0, 0};
+  ManifoldCache cache;
+};
+
+inline std::uint64_t pair_key(ProxyId a, ProxyId b) {
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
+}
+
+// Mixing rules as in Box2D: geometric mean of friction, the larger restitution.
+inline Real mix_friction(Real a, Real b) { return std::sqrt(a * b); }
+inline Real mix_restitution(Real a, Real b) { return a > b ? a : b; }
+
+}  // namespace mink::detail

@@ -1,0 +1,75 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mink/engine/stale_id_error.hpp"
+
+namespace mink::detail {
+
+// Slots with generations and a free list, shared by bodies and shapes. A slot type has
+// `alive` and `generation`; an id type has `index`, `generation` and `world`. Destroying bumps
+// the generation so kept ids go stale; ids name their world so one from another World is
+// refused instead of reaching a slot that happens to exist here too.
+template <typename Slot>
+class IdPool {
+ public:
+  std::uint32_t allocate() {
+    std::uint32_t index;
+    if (!free_.empty()) {
+      index = free_.back();
+      free_.pop_back();
+    } else {
+      index = static_cast<std::uint32_t>(slots_.size());
+      slots_.emplace_back();
+    }
+    Slot& slot = slots_[index];
+    const std::uint32_t generation = slot.generation;
+    slot = Slot{};
+    slot.generation = generation;
+    slot.alive = true;
+    ++live_;
+    return index;
+  }
+
+  void release(std::uint32_t index) {
+    Slot& slot = slots_[index];
+    slot.alive = false;
+    ++slot.generation;
+    free_.push_back(index);
+    --live_;
+  }
+
+  template <typename Id>
+  bool valid(const Id& id, std::uint32_t world) const noexcept {
+    return id.world == world && id.index < slots_.size() && slots_[id.index].alive &&
+           slots_[id.index].generation == id.generation;
+  }
+
+  template <typename Id>
+  Slot& get(const Id& id, std::uint32_t world, const char* what) {
+    if (!valid(id, world)) {
+      throw StaleIdError(to_string(id) + " does not name a live " + what + " of this world");
+    }
+    return slots_[id.index];
+  }
+
+  std::vector<Slot>& slots() noexcept { return slots_; }
+  const std::vector<Slot>& slots() const noexcept { return slots_; }
+  Slot& operator[](std::uint32_t index) { return slots_[index]; }
+  const Slot& operator[](std::uint32_t index) const { return slots_[index]; }
+  std::size_t size() const noexcept { return slots_.size(); }
+  auto begin() noexcept { return slots_.begin(); }
+  auto end() noexcept { return slots_.end(); }
+  auto begin() const noexcept { return slots_.begin(); }
+  auto end() const noexcept { return slots_.end(); }
+  std::size_t live() const noexcept { return live_; }
+
+ private:
+  std::vector<Slot> slots_;
+  std::vector<std::uint32_t> free_;
+  std::size_t live_ = 0;
+};
+
+}  // namespace mink::detail

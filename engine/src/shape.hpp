@@ -1,0 +1,42 @@
+#pragma once
+
+#include <cstdint>
+#include <limits>
+
+#include "mink/broadphase/broadphase.hpp"
+#include "mink/engine/shape_def.hpp"
+#include "mink/narrowphase/shape_geometry.hpp"
+
+namespace mink::detail {
+
+inline constexpr std::uint32_t kNoChain = std::numeric_limits<std::uint32_t>::max();
+
+// A shape record: geometry in its body's frame, material, filter and event flags.
+struct Shape {
+  ShapeGeometry geometry = Circle{};
+  ShapeType type = ShapeType::polygon;
+  Aabb aabb;  // tight box at the current pose, grown by the speculative margin and the sweep
+  Real density = 1, friction = 0.6, restitution = 0;
+  Filter filter;
+  bool sensor = false;
+  bool contact_events = true, sensor_events = true, hit_events = false;
+  HullAlgorithm algorithm = HullAlgorithm::chan;
+  ProxyId proxy = null_proxy;
+  std::uint32_t body = 0;
+  std::uint32_t chain = kNoChain;  // which create_chain call made it
+  bool chain_loop = false;
+  std::uint32_t generation = 0;
+  bool alive = false;
+  std::uint64_t user_data = 0;
+};
+
+// The narrowphase geometry a (checked) ShapeDef describes; polygons are hulled here.
+ShapeGeometry make_geometry(const ShapeDef& def);
+
+// Radius of the shape around its core (0 for segments, chains and sharp polygons).
+Real shape_radius(const ShapeGeometry& geometry);
+
+// Largest distance from `center` (body frame) to a point of the shape, radius included.
+Real shape_extent(const ShapeGeometry& geometry, const Vec2& center);
+
+}  // namespace mink::detail

@@ -1,0 +1,242 @@
+// The solver stages of one step: build the solver bodies and contact constraints, run the
+// substepped soft-step solve, write poses back and finish the step's bookkeeping.
+
+#include <algorithm>
+#include <cmath>
+
+#include "world_state.hpp"
+
+namespace mink {
+
+using detail::Body;
+using detail::Contact;
+
+void WorldState::prepare_contacts() {
+  const Real h = dt / substeps;
+
+  // Solver bodies: every awake body that moves, then one still body standing in for static
+  // and sleeping ones.
+  solver_bodies.clear();
+  solver_params.clear();
+  solver_to_body.clear();
+  solver_info.clear();
+  body_solver_index.resize(bodies.size());
+  for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+    const Body& b = bodies[i];
+    body_solver_index[i] = -1;
+    if (!b.alive || !detail::moves(b)) continue;
+    body_solver_index[i] = static_cast<std::int32_t>(solver_bodies.size());
+    solver_info.push_back({b.center.x(), b.center.y(), b.inv_mass, b.inv_inertia});
+    detail::SolverBody sb;
+    sb.vx = b.velocity.x();
+    sb.vy = b.velocity.y();
+    sb.w = b.angular_velocity;
+    solver_bodies.push_back(sb);
+    detail::SolverBodyParams p;
+    if (b.type == BodyType::dynamic) {
+      const Vec2 dv = h * (b.inv_mass * b.force + b.gravity_scale * def.gravity);
+      p.dvx = dv.x();
+      p.dvy = dv.y();
+      p.dw = h * b.inv_inertia * b.torque;
+      p.linear_damping = 1 / (1 + h * b.linear_damping);
+      p.angular_damping = 1 / (1 + h * b.angular_damping);
+    }
+    solver_params.push_back(p);
+    solver_to_body.push_back(i);
+  }
+  const auto still = static_cast<std::int32_t>(solver_bodies.size());
+  solver_bodies.emplace_back();
+  solver_params.emplace_back();
+  counters.awake_bodies = solver_to_body.size();
+
+  const Real contact_hertz = std::min(def.contact_hertz, 0.25 * substeps / dt);
+  const detail::Softness soft = detail::make_softness(contact_hertz, def.contact_damping_ratio, h);
+  const detail::Softness static_soft =
+      detail::make_softness(2 * contact_hertz, def.contact_damping_ratio, h);
+
+  // Which contacts become constraints, and between which solver bodies: the solver colours
+  // them first, then each constraint is built straight into its slot.
+  constraint_contacts.clear();
+  constraint_bodies.clear();
+  for (std::uint32_t ci = 0; ci < contacts.size(); ++ci) {
+    const Contact& c = contacts[ci];
+    if (c.manifold.point_count == 0) continue;
+    const std::int32_t ia = body_solver_index[c.body_a], ib = body_solver_index[c.body_b];
+    if (ia < 0 && ib < 0) continue;
+    constraint_contacts.push_back(ci);
+    // The still body is fixed as well (the colouring relies on it), so only the records of
+    // moving bodies are read.
+    constraint_bodies.push_back({ia < 0 ? still : ia, ib < 0 ? still : ib,
+                                 ia < 0 || bodies[c.body_a].type != BodyType::dynamic,
+                                 ib < 0 || bodies[c.body_b].type != BodyType::dynamic});
+  }
+  // Constraints in order of their first moving body (a stable counting sort): neighbouring
+  // constraints then touch neighbouring bodies and the solver's gathers stay in cache.
+  {
+    const std::size_t n = constraint_contacts.size();
+    sort_count.assign(solver_bodies.size() + 1, 0);
+    const auto key = [&](const detail::ConstraintBodies& cb) {
+      return static_cast<std::size_t>(cb.a == still ? cb.b : cb.a);
+    };
+    for (const detail::ConstraintBodies& cb : constraint_bodies) ++sort_count[key(cb) + 1];
+    for (std::size_t i = 1; i < sort_count.size(); ++i) sort_count[i] += sort_count[i - 1];
+    sorted_contacts.resize(n);
+    sorted_bodies.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t at = sort_count[key(constraint_bodies[i])]++;
+      sorted_contacts[at] = constraint_contacts[i];
+      sorted_bodies[at] = constraint_bodies[i];
+    }
+    constraint_contacts.swap(sorted_contacts);
+    constraint_bodies.swap(sorted_bodies);
+  }
+  contact_solver.begin(constraint_bodies, still, solver_bodies.size(), def.simd_solver);
+
+  // Per-constraint body data comes from the compact solver arrays, not the body records.
+  const auto info = [&](std::uint32_t body, std::int32_t index) {
+    if (index != still) return solver_info[static_cast<std::size_t>(index)];
+    return detail::SolverBodyInfo{bodies[body].center.x(), bodies[body].center.y(), 0, 0};
+  };
+  detail::ContactConstraint k;
+  for (std::uint32_t r = 0; r < constraint_contacts.size(); ++r) {
+    const Contact& c = contacts[constraint_contacts[r]];
+    const detail::ConstraintBodies& cb = constraint_bodies[r];
+    const detail::SolverBodyInfo a = info(c.body_a, cb.a), b = info(c.body_b, cb.b);
+    k.body_a = cb.a;
+    k.body_b = cb.b;
+    k.inv_mass_a = a.inv_mass;
+    k.inv_inertia_a = a.inv_inertia;
+    k.inv_mass_b = b.inv_mass;
+    k.inv_inertia_b = b.inv_inertia;
+    k.nx = c.manifold.normal.x();
+    k.ny = c.manifold.normal.y();
+    k.dx = a.cx - b.cx;
+    k.dy = a.cy - b.cy;
+    k.friction = c.friction;
+    k.restitution = c.restitution;
+    const detail::Softness& s = (k.inv_mass_a == 0 || k.inv_mass_b == 0) ? static_soft : soft;
+    k.bias_rate = s.bias_rate;
+    k.mass_scale = s.mass_scale;
+    k.impulse_scale = s.impulse_scale;
+    k.point_count = c.manifold.point_count;
+    const Real tx = k.ny, ty = -k.nx;
+    const detail::SolverBody& sa = solver_bodies[static_cast<std::size_t>(k.body_a)];
+    const detail::SolverBody& sb = solver_bodies[static_cast<std::size_t>(k.body_b)];
+    if (k.point_count < 2) k.points[1] = detail::ContactConstraintPoint{};
+    for (int j = 0; j < k.point_count; ++j) {
+      const ManifoldPoint& mp = c.manifold.points[static_cast<std::size_t>(j)];
+      detail::ContactConstraintPoint& p = k.points[j];
+      p.ax = mp.point.x() - a.cx;
+      p.ay = mp.point.y() - a.cy;
+      // Through the centre offset, as the wide solver recomputes it (same bits).
+      p.bx = p.ax + k.dx;
+      p.by = p.ay + k.dy;
+      p.base_separation = mp.separation - ((p.bx - p.ax) * k.nx + (p.by - p.ay) * k.ny);
+      const Real rna = p.ax * k.ny - p.ay * k.nx;
+      const Real rnb = p.bx * k.ny - p.by * k.nx;
+      const Real kn =
+          k.inv_mass_a + k.inv_mass_b + k.inv_inertia_a * rna * rna + k.inv_inertia_b * rnb * rnb;
+      p.normal_mass = kn > 0 ? 1 / kn : 0;
+      const Real rta = p.ax * ty - p.ay * tx;
+      const Real rtb = p.bx * ty - p.by * tx;
+      const Real kt =
+          k.inv_mass_a + k.inv_mass_b + k.inv_inertia_a * rta * rta + k.inv_inertia_b * rtb * rtb;
+      p.tangent_mass = kt > 0 ? 1 / kt : 0;
+      p.normal_impulse = c.normal_impulse[j];
+      p.tangent_impulse = c.tangent_impulse[j];
+      p.max_normal_impulse = 0;
+      const Real dvx = (sb.vx - sb.w * p.by) - (sa.vx - sa.w * p.ay);
+      const Real dvy = (sb.vy + sb.w * p.bx) - (sa.vy + sa.w * p.ax);
+      p.relative_velocity = dvx * k.nx + dvy * k.ny;
+    }
+    contact_solver.set(r, k);
+  }
+  contact_solver.finish();
+
+  counters.constraint_colors = contact_solver.color_count();
+  counters.overflow_constraints = contact_solver.overflow_count();
+}
+
+void WorldState::solve() {
+  const Real h = dt / substeps;
+  detail::SolverSettings settings;
+  settings.h = h;
+  settings.inv_h = 1 / h;
+  settings.max_linear_speed = def.max_linear_speed;
+  settings.contact_push_max_velocity = def.contact_push_max_velocity;
+  settings.restitution_threshold = def.restitution_threshold;
+  settings.substeps = substeps;
+  contact_solver.solve(solver_bodies, solver_params, settings);
+
+  for (std::uint32_t r = 0; r < constraint_contacts.size(); ++r) {
+    Contact& c = contacts[constraint_contacts[r]];
+    contact_solver.impulses(r, c.normal_impulse, c.tangent_impulse);
+    // A hit: the shapes met fast and the contact pushed (a speculative point that never
+    // closed does not count).
+    if (c.hit_events && c.approach_speed > def.hit_event_threshold &&
+        std::max(c.normal_impulse[0], c.normal_impulse[1]) > 0) {
+      hit_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b), c.approach_point,
+                            c.manifold.normal, c.approach_speed});
+    }
+  }
+
+  // Write poses back: centre moved by dp, rotation composed with the step's rotation.
+  for (std::size_t si = 0; si < solver_to_body.size(); ++si) {
+    Body& b = bodies[solver_to_body[si]];
+    const detail::SolverBody& sb = solver_bodies[si];
+    b.previous_origin = b.origin;
+    b.previous_rotation = b.rotation;
+    b.moved_step = step_count;
+    b.velocity = Vec2(sb.vx, sb.vy);
+    b.angular_velocity = sb.w;
+    b.center += Vec2(sb.dpx, sb.dpy);
+    const Real c = sb.qc * b.rotation.cos - sb.qs * b.rotation.sin;
+    const Real s = sb.qs * b.rotation.cos + sb.qc * b.rotation.sin;
+    const Real inv_length = 1 / std::sqrt(c * c + s * s);
+    b.rotation = {c * inv_length, s * inv_length};
+    b.origin = b.center - b.rotation.apply(b.local_center);
+    b.force = Vec2(0, 0);
+    b.torque = 0;
+  }
+}
+
+void WorldState::finish_step() {
+  const Real linear_tolerance_squared = def.linear_sleep_tolerance * def.linear_sleep_tolerance;
+  const Real angular_tolerance_squared = def.angular_sleep_tolerance * def.angular_sleep_tolerance;
+  for (const std::uint32_t i : solver_to_body) {
+    Body& b = bodies[i];
+    for (std::uint32_t s : b.shapes) {
+      update_shape_aabb(shapes[s], b, dt);
+      if (shapes[s].proxy != null_proxy) broadphase.move_proxy(shapes[s].proxy, shapes[s].aabb);
+    }
+    if (!def.enable_sleep || !b.allow_sleep || b.type != BodyType::dynamic ||
+        b.velocity.squaredNorm() > linear_tolerance_squared ||
+        b.angular_velocity * b.angular_velocity > angular_tolerance_squared) {
+      b.sleep_time = 0;
+    } else {
+      b.sleep_time += dt;
+    }
+  }
+  // Move events in body slot order: the simulated bodies, and those that fell asleep.
+  for (const std::uint32_t i : solver_to_body) {
+    const Body& b = bodies[i];
+    move_events.push_back({body_id(i), b.pose(), false, b.user_data});
+  }
+  for (const std::uint32_t i : fell_asleep) {
+    const Body& b = bodies[i];
+    move_events.push_back({body_id(i), b.pose(), true, b.user_data});
+  }
+  if (!fell_asleep.empty()) {
+    std::sort(move_events.begin(), move_events.end(),
+              [](const BodyMoveEvent& x, const BodyMoveEvent& y) {
+                return x.body.index < y.body.index;
+              });
+  }
+  std::size_t touching = 0;
+  for (const Contact& c : contacts) touching += c.touching ? 1 : 0;
+  counters.broadphase_pairs = broadphase.pairs().size();
+  counters.contacts = contacts.size();
+  counters.touching_contacts = touching;
+}
+
+}  // namespace mink
