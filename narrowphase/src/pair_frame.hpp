@@ -63,6 +63,21 @@ class PairFrame {
     return pose_a_;
   }
 
+  // The interface distance_loop needs (CoreFrame offers the same).
+  std::size_t a_count() const noexcept {
+    return a_.size();
+  }
+  std::size_t b_count() const noexcept {
+    return b_.size();
+  }
+  Vec2 a_vertex(std::size_t i) const {
+    return a_.vertices()[i];
+  }
+  // Eq. 2: from A's centroid to B's, in A's frame.
+  Vec2 initial_direction() const {
+    return relative_.apply(b_.centroid()) - a_.centroid();
+  }
+
   Vec2 b_vertex(std::size_t i) const {
     return mapped_ ? Vec2(bx_[i], by_[i]) : relative_.apply(b_.vertices()[i]);
   }

@@ -1,4 +1,4 @@
-#include "mink/engine/ray_cast.hpp"
+#include "mink/narrowphase/ray_cast.hpp"
 
 #include <limits>
 
