@@ -38,7 +38,9 @@ bool chain_normal_admissible(const ChainSegment& chain, const Vec2& normal) {
   const Vec2 e1 = p2 - p1;
   const Vec2 e2 = chain.ghost2 - p2;
   const Vec2 n = right_normal(e1);
-  if (normal.dot(n) >= 1 - 1e-10) return true;
+  // The segment normal itself, up to the rounding of a normal computed elsewhere (a tilted
+  // face of the other shape is not it: that one would be forced to the segment normal).
+  if (normal.dot(n) >= 1 - 1e-15) return true;
   // Around a convex joint the surface turns from one segment's normal to the next one's, so
   // those in between are real; at a flat or concave joint the neighbour covers the rest.
   if (convex_turn(e0, e1) && in_cone(right_normal(e0), normal, n)) return true;
