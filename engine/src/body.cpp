@@ -218,7 +218,8 @@ Pose World::interpolated_pose(BodyId id, Real alpha) const {
   // Blend the angle along the shorter way round.
   const Rotation& r0 = b.previous_rotation;
   const Rotation& r1 = b.rotation;
-  const Real turn = std::atan2(r0.cos * r1.sin - r0.sin * r1.cos, r0.cos * r1.cos + r0.sin * r1.sin);
+  const Real turn =
+      std::atan2(r0.cos * r1.sin - r0.sin * r1.cos, r0.cos * r1.cos + r0.sin * r1.sin);
   pose.rotation = Rotation::from_angle(r0.angle() + a * turn);
   return pose;
 }
@@ -245,6 +246,7 @@ void World::set_transform(BodyId id, const Vec2& position, Real angle) {
           "set_transform of " + to_string(id) + ": position and angle must be finite");
   WorldState& w = *state_;
   Body& b = w.body(id);
+  for (std::uint32_t s : b.shapes) w.update_seams(s, true);  // the old neighbours
   b.origin = position;
   b.rotation = Rotation::from_angle(angle);
   b.center = b.origin + b.rotation.apply(b.local_center);
@@ -253,6 +255,7 @@ void World::set_transform(BodyId id, const Vec2& position, Real angle) {
     w.update_shape_aabb(shape, b, 0);
     if (shape.proxy != null_proxy) w.broadphase.move_proxy(shape.proxy, shape.aabb);
   }
+  for (std::uint32_t s : b.shapes) w.update_seams(s, false);
   w.wake(b);
 }
 
@@ -319,6 +322,7 @@ void World::set_body_type(BodyId id, BodyType type) {
   WorldState& w = *state_;
   Body& b = w.body(id);
   if (b.type == type) return;
+  for (std::uint32_t s : b.shapes) w.update_seams(s, true);
   b.type = type;
   if (type == BodyType::static_body) {
     b.velocity = Vec2(0, 0);
@@ -331,17 +335,24 @@ void World::set_body_type(BodyId id, BodyType type) {
   w.update_mass(b);
   // The broadphase files static and moving proxies apart, and contacts depend on the types.
   for (std::uint32_t s : b.shapes) w.refresh_proxy(s);
+  for (std::uint32_t s : b.shapes) w.update_seams(s, false);
 }
 
 void World::set_enabled(BodyId id, bool enabled) {
   WorldState& w = *state_;
   Body& b = w.body(id);
   if (b.enabled == enabled) return;
+  if (!enabled) {
+    for (std::uint32_t s : b.shapes) w.update_seams(s, true);
+  }
   b.enabled = enabled;
   for (std::uint32_t s : b.shapes) {
     w.destroy_shape_contacts(s);
     w.destroy_proxy(w.shapes[s]);
     if (enabled) w.create_proxy(s);
+  }
+  if (enabled) {
+    for (std::uint32_t s : b.shapes) w.update_seams(s, false);
   }
   w.wake(b);
 }
@@ -367,9 +378,9 @@ void World::set_target_transform(BodyId id, const Vec2& position, Real angle, Re
           "set_target_transform of " + to_string(id) + ": time_step must be positive and finite");
   WorldState& w = *state_;
   Body& b = w.body(id);
-  require(b.type == BodyType::kinematic,
-          "set_target_transform of " + to_string(id) + ": the body is " +
-              std::string(to_string(b.type)) + ", not kinematic");
+  require(b.type == BodyType::kinematic, "set_target_transform of " + to_string(id) +
+                                             ": the body is " + std::string(to_string(b.type)) +
+                                             ", not kinematic");
   const Rotation target = Rotation::from_angle(angle);
   const Vec2 target_center = position + target.apply(b.local_center);
   b.velocity = (target_center - b.center) / time_step;
@@ -377,7 +388,11 @@ void World::set_target_transform(BodyId id, const Vec2& position, Real angle, Re
   const Rotation& now = b.rotation;
   const Real turn = std::atan2(now.cos * target.sin - now.sin * target.cos,
                                now.cos * target.cos + now.sin * target.sin);
-  b.angular_velocity = turn / time_step;
+  // The integrator turns by atan(h w) per substep of length h (it renormalises q + h w q'),
+  // so this w lands on the target angle rather than short of it.
+  const int substeps = w.def.substeps;
+  const Real h = time_step / substeps;
+  b.angular_velocity = std::tan(turn / substeps) / h;
   w.wake(b);
 }
 

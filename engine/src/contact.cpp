@@ -166,12 +166,15 @@ void WorldState::collide() {
                              std::abs(body_b.angular_velocity) * body_b.extent;
         const Real speculative = touching_distance + dt * closing;
         if (c.sharp_polygons) {
-          c.manifold = collide_hulls(std::get<RoundedPolygon>(shape_a.geometry).hull, pose_a,
-                                     std::get<RoundedPolygon>(shape_b.geometry).hull, pose_b,
-                                     speculative);
+          c.manifold =
+              collide_hulls(std::get<RoundedPolygon>(shape_a.geometry).hull, pose_a,
+                            std::get<RoundedPolygon>(shape_b.geometry).hull, pose_b, speculative);
+          if (!shape_a.internal_edges.empty() || !shape_b.internal_edges.empty()) {
+            smooth_seam(c, speculative);
+          }
         } else {
-          c.manifold = collide_shapes(shape_a.geometry, pose_a, shape_b.geometry, pose_b,
-                                      speculative);
+          c.manifold =
+              collide_shapes(shape_a.geometry, pose_a, shape_b.geometry, pose_b, speculative);
         }
       }
       cache.valid = c.manifold.point_count > 0;

@@ -30,8 +30,8 @@ struct Contact {
   std::uint32_t shape_a = 0, shape_b = 0;
   ProxyId proxy_a = null_proxy, proxy_b = null_proxy;
   bool touching = false;
-  bool events = true;       // begin/end events (both shapes allow them)
-  bool hit_events = false;  // either shape asks for hit events
+  bool events = true;           // begin/end events (both shapes allow them)
+  bool hit_events = false;      // either shape asks for hit events
   bool sharp_polygons = false;  // both are polygons without rounding: the direct hull path
   // Fastest normal approach over the points before the solve, and where (hit events only).
   Real approach_speed = 0;
@@ -44,7 +44,11 @@ inline std::uint64_t pair_key(ProxyId a, ProxyId b) {
 }
 
 // Mixing rules as in Box2D: geometric mean of friction, the larger restitution.
-inline Real mix_friction(Real a, Real b) { return std::sqrt(a * b); }
-inline Real mix_restitution(Real a, Real b) { return a > b ? a : b; }
+inline Real mix_friction(Real a, Real b) {
+  return std::sqrt(a * b);
+}
+inline Real mix_restitution(Real a, Real b) {
+  return a > b ? a : b;
+}
 
 }  // namespace mink::detail

@@ -17,8 +17,8 @@ constexpr int kArcSegmentsPerTurn = 32;
 // Appends the arc of `radius` about `center` from angle `from` counter-clockwise to `to`.
 void append_arc(std::vector<Vec2>& out, const Vec2& center, Real radius, Real from, Real to) {
   const Real sweep = to - from;
-  const int steps =
-      std::max(1, static_cast<int>(std::ceil(sweep / (2 * std::numbers::pi) * kArcSegmentsPerTurn)));
+  const int steps = std::max(
+      1, static_cast<int>(std::ceil(sweep / (2 * std::numbers::pi) * kArcSegmentsPerTurn)));
   for (int i = 0; i <= steps; ++i) {
     const Real a = from + sweep * i / steps;
     out.push_back(center + radius * Vec2(std::cos(a), std::sin(a)));

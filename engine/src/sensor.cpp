@@ -64,9 +64,9 @@ void WorldState::update_sensors() {
 }
 
 void WorldState::destroy_sensor(std::uint32_t shape_index) {
-  const auto at = std::lower_bound(
-      sensors.begin(), sensors.end(), shape_index,
-      [](const SensorState& state, std::uint32_t i) { return state.shape < i; });
+  const auto at =
+      std::lower_bound(sensors.begin(), sensors.end(), shape_index,
+                       [](const SensorState& state, std::uint32_t i) { return state.shape < i; });
   if (at == sensors.end() || at->shape != shape_index) return;
   for (const ShapeId& visitor : at->visitors) {
     sensor_end_events.push_back({shape_id(shape_index), visitor});

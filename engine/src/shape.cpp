@@ -107,8 +107,7 @@ void WorldState::update_shape_aabb(Shape& s, const Body& b, Real step) {
     }
   });
   const Real radius = detail::shape_radius(s.geometry);
-  const Real margin =
-      radius + 4 * def.linear_slop + step * std::abs(b.angular_velocity) * b.extent;
+  const Real margin = radius + 4 * def.linear_slop + step * std::abs(b.angular_velocity) * b.extent;
   const Real sx = step * b.velocity.x(), sy = step * b.velocity.y();
   s.aabb.lower = Vec2(pose.position.x() + lx - margin + std::min(sx, Real{0}),
                       pose.position.y() + ly - margin + std::min(sy, Real{0}));
@@ -172,6 +171,7 @@ void finish_attach(WorldState& w, std::uint32_t body_index, std::span<const std:
   w.update_mass(b);
   if (b.enabled) {
     for (std::uint32_t index : added) w.create_proxy(index);
+    for (std::uint32_t index : added) w.update_seams(index, false);
   }
   w.wake(b);
 }
@@ -229,6 +229,7 @@ void World::destroy_shape(ShapeId id) {
   WorldState& w = *state_;
   Shape& s = w.shape(id);
   w.destroy_shape_contacts(id.index);
+  w.update_seams(id.index, true);
   if (s.sensor) w.destroy_sensor(id.index);
   w.destroy_proxy(s);
   Body& b = w.bodies[s.body];
@@ -338,8 +339,8 @@ void World::set_shape_restitution(ShapeId id, Real restitution) {
   w.shape(id).restitution = restitution;
   for (detail::Contact& c : w.contacts) {
     if (c.shape_a == id.index || c.shape_b == id.index) {
-      c.restitution = detail::mix_restitution(w.shapes[c.shape_a].restitution,
-                                              w.shapes[c.shape_b].restitution);
+      c.restitution =
+          detail::mix_restitution(w.shapes[c.shape_a].restitution, w.shapes[c.shape_b].restitution);
     }
   }
 }

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "mink/broadphase/broadphase.hpp"
 #include "mink/engine/shape_def.hpp"
@@ -28,6 +29,9 @@ struct Shape {
   std::uint32_t generation = 0;
   bool alive = false;
   std::uint64_t user_data = 0;
+  // Static sharp polygons only: 1 for each edge that another static polygon's edge covers
+  // exactly (a seam between tiles); empty when none is. See seam.cpp.
+  std::vector<std::uint8_t> internal_edges;
 };
 
 // The narrowphase geometry a (checked) ShapeDef describes; polygons are hulled here.

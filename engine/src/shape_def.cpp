@@ -103,8 +103,9 @@ std::string number(Real value) {
 }
 
 void check_material(Real value, const char* name) {
-  require(std::isfinite(value) && value >= 0,
-          std::string("ShapeDef.") + name + " must be finite and non-negative, got " + number(value));
+  require(
+      std::isfinite(value) && value >= 0,
+      std::string("ShapeDef.") + name + " must be finite and non-negative, got " + number(value));
 }
 
 void check_points_finite(const std::vector<Vec2>& points) {
@@ -140,8 +141,8 @@ void check_shape_def(const ShapeDef& def) {
     case ShapeType::circle:
       check_point_count(def, 1);
       check_points_finite(def.points);
-      require(def.radius > 0, "ShapeDef.radius of a circle must be positive, got " +
-                                  number(def.radius));
+      require(def.radius > 0,
+              "ShapeDef.radius of a circle must be positive, got " + number(def.radius));
       break;
     case ShapeType::capsule:
     case ShapeType::segment:
@@ -150,8 +151,8 @@ void check_shape_def(const ShapeDef& def) {
       require(def.points[0] != def.points[1],
               "ShapeDef.points of a " + std::string(to_string(def.type)) + " must differ");
       if (def.type == ShapeType::capsule) {
-        require(def.radius > 0, "ShapeDef.radius of a capsule must be positive, got " +
-                                    number(def.radius));
+        require(def.radius > 0,
+                "ShapeDef.radius of a capsule must be positive, got " + number(def.radius));
       } else {
         require(def.radius == 0, "ShapeDef.radius of a segment must be 0 (use a capsule)");
       }
@@ -164,9 +165,9 @@ void check_shape_def(const ShapeDef& def) {
                                                " points, got " + std::to_string(def.points.size()));
       check_points_finite(def.points);
       for (std::size_t i = 0; i + 1 < def.points.size(); ++i) {
-        require(def.points[i] != def.points[i + 1],
-                "ShapeDef.points of a chain: points " + std::to_string(i) + " and " +
-                    std::to_string(i + 1) + " are equal");
+        require(def.points[i] != def.points[i + 1], "ShapeDef.points of a chain: points " +
+                                                        std::to_string(i) + " and " +
+                                                        std::to_string(i + 1) + " are equal");
       }
       require(!def.loop || def.points.front() != def.points.back(),
               "ShapeDef.points of a looped chain: the last point repeats the first (the loop "

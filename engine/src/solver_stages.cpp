@@ -227,10 +227,9 @@ void WorldState::finish_step() {
     move_events.push_back({body_id(i), b.pose(), true, b.user_data});
   }
   if (!fell_asleep.empty()) {
-    std::sort(move_events.begin(), move_events.end(),
-              [](const BodyMoveEvent& x, const BodyMoveEvent& y) {
-                return x.body.index < y.body.index;
-              });
+    std::sort(
+        move_events.begin(), move_events.end(),
+        [](const BodyMoveEvent& x, const BodyMoveEvent& y) { return x.body.index < y.body.index; });
   }
   std::size_t touching = 0;
   for (const Contact& c : contacts) touching += c.touching ? 1 : 0;

@@ -57,12 +57,12 @@ std::vector<ShapeId> World::query_aabb(const Aabb& box) const {
   std::vector<ProxyId> proxies;
   w.broadphase.query(box, proxies);
   std::vector<ShapeId> found;
-  for_each_candidate(
-      w, proxies, [&](std::uint32_t index, const ShapeGeometry& geometry, const Pose& pose) {
-        if (shape_distance(probe, Pose{}, geometry, pose).overlap) {
-          found.push_back(w.shape_id(index));
-        }
-      });
+  for_each_candidate(w, proxies,
+                     [&](std::uint32_t index, const ShapeGeometry& geometry, const Pose& pose) {
+                       if (shape_distance(probe, Pose{}, geometry, pose).overlap) {
+                         found.push_back(w.shape_id(index));
+                       }
+                     });
   return sorted_by_slot(std::move(found));
 }
 
@@ -71,10 +71,11 @@ std::vector<ShapeId> World::query_point(const Vec2& point) const {
   std::vector<ProxyId> proxies;
   w.broadphase.query_point(point, proxies);
   std::vector<ShapeId> found;
-  for_each_candidate(
-      w, proxies, [&](std::uint32_t index, const ShapeGeometry& geometry, const Pose& pose) {
-        if (contains_point(geometry, pose, point)) found.push_back(w.shape_id(index));
-      });
+  for_each_candidate(w, proxies,
+                     [&](std::uint32_t index, const ShapeGeometry& geometry, const Pose& pose) {
+                       if (contains_point(geometry, pose, point))
+                         found.push_back(w.shape_id(index));
+                     });
   return sorted_by_slot(std::move(found));
 }
 
@@ -126,8 +127,8 @@ void World::draw(DebugDraw& draw) const {
               draw.draw_solid_circle(pose.apply(g.center), g.radius, b.rotation.angle(), color,
                                      outline);
             } else if constexpr (std::is_same_v<G, Capsule>) {
-              draw.draw_solid_capsule(pose.apply(g.center1), pose.apply(g.center2), g.radius,
-                                      color, outline);
+              draw.draw_solid_capsule(pose.apply(g.center1), pose.apply(g.center2), g.radius, color,
+                                      outline);
             } else if constexpr (std::is_same_v<G, Segment>) {
               draw.draw_segment(pose.apply(g.point1), pose.apply(g.point2), outline);
             } else if constexpr (std::is_same_v<G, ChainSegment>) {

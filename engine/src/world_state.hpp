@@ -66,16 +66,10 @@ struct WorldState {
   std::vector<ProxyId> query_scratch;
 
   detail::Body& body(BodyId id) { return bodies.get(id, serial, "body"); }
-  const detail::Body& body(BodyId id) const {
-    return const_cast<WorldState*>(this)->body(id);
-  }
+  const detail::Body& body(BodyId id) const { return const_cast<WorldState*>(this)->body(id); }
   detail::Shape& shape(ShapeId id) { return shapes.get(id, serial, "shape"); }
-  const detail::Shape& shape(ShapeId id) const {
-    return const_cast<WorldState*>(this)->shape(id);
-  }
-  ShapeId shape_id(std::uint32_t index) const {
-    return {index, shapes[index].generation, serial};
-  }
+  const detail::Shape& shape(ShapeId id) const { return const_cast<WorldState*>(this)->shape(id); }
+  ShapeId shape_id(std::uint32_t index) const { return {index, shapes[index].generation, serial}; }
   BodyId body_id(std::uint32_t index) const { return {index, bodies[index].generation, serial}; }
 
   void clear_events();
@@ -89,6 +83,9 @@ struct WorldState {
   // Re-makes the shape's broadphase proxy, so every pair it is in is tested again next step
   // (after a filter, type or enable change); its contacts end now.
   void refresh_proxy(std::uint32_t shape_index);
+  // seam.cpp
+  void update_seams(std::uint32_t shape_index, bool removing);
+  bool smooth_seam(detail::Contact& contact, Real speculative_distance);
   // contact.cpp
   void destroy_contact(std::uint32_t index);
   void destroy_shape_contacts(std::uint32_t shape_index);

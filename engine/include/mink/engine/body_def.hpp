@@ -32,7 +32,7 @@ struct BodyDef {
   /// Continuous collision against dynamic bodies too, not only against static and kinematic
   /// ones (for small fast bodies).
   bool bullet = false;
-  std::uint64_t user_data = 0;            ///< anything the caller wants back from World::user_data
+  std::uint64_t user_data = 0;  ///< anything the caller wants back from World::user_data
 };
 
 }  // namespace mink

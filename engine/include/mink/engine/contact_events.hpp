@@ -25,10 +25,10 @@ struct ContactEndEvent {
 /// @brief Two shapes met faster than WorldDef::hit_event_threshold (either shape asked for hit
 /// events).
 struct ContactHitEvent {
-  ShapeId shape_a;       ///< one shape of the pair
-  ShapeId shape_b;       ///< the other
-  Vec2 point{0, 0};      ///< where, world
-  Vec2 normal{0, 0};     ///< unit, from A to B
+  ShapeId shape_a;          ///< one shape of the pair
+  ShapeId shape_b;          ///< the other
+  Vec2 point{0, 0};         ///< where, world
+  Vec2 normal{0, 0};        ///< unit, from A to B
   Real approach_speed = 0;  ///< normal closing speed before the step's solve, m/s, > 0
 };
 
@@ -47,9 +47,9 @@ struct SensorEndEvent {
 /// @brief A body moved during the last step: its new pose, for renderers and games that sync
 /// only what changed.
 struct BodyMoveEvent {
-  BodyId body;              ///< the body
-  Pose pose;                ///< of the body origin, world
-  bool fell_asleep = false;  ///< it went to sleep at the end of this step
+  BodyId body;                  ///< the body
+  Pose pose;                    ///< of the body origin, world
+  bool fell_asleep = false;     ///< it went to sleep at the end of this step
   std::uint64_t user_data = 0;  ///< the body's user data
 };
 
@@ -62,11 +62,11 @@ struct ContactData {
 
 /// @brief What the last step did, for tools and tests.
 struct StepCounters {
-  std::size_t broadphase_pairs = 0;   ///< overlapping box pairs the broadphase reported
-  std::size_t contacts = 0;           ///< pairs with a contact record
-  std::size_t touching_contacts = 0;  ///< contacts with manifold points within touching distance
-  std::size_t awake_bodies = 0;       ///< bodies simulated (not asleep)
-  std::size_t islands = 0;            ///< awake islands
+  std::size_t broadphase_pairs = 0;      ///< overlapping box pairs the broadphase reported
+  std::size_t contacts = 0;              ///< pairs with a contact record
+  std::size_t touching_contacts = 0;     ///< contacts with manifold points within touching distance
+  std::size_t awake_bodies = 0;          ///< bodies simulated (not asleep)
+  std::size_t islands = 0;               ///< awake islands
   std::size_t constraint_colors = 0;     ///< graph colours the solver used
   std::size_t overflow_constraints = 0;  ///< contacts solved one at a time (colours ran out)
 };

@@ -48,8 +48,8 @@ class DebugDraw {
   virtual void draw_solid_circle(const Vec2& center, Real radius, Real angle, Color fill,
                                  Color outline);
   /// @brief A filled capsule (stadium); by default tessellated like draw_solid_circle.
-  virtual void draw_solid_capsule(const Vec2& center1, const Vec2& center2, Real radius,
-                                  Color fill, Color outline);
+  virtual void draw_solid_capsule(const Vec2& center1, const Vec2& center2, Real radius, Color fill,
+                                  Color outline);
   /// @brief A convex polygon (counter-clockwise) rounded by `radius`; by default tessellated.
   virtual void draw_rounded_polygon(std::span<const Vec2> vertices, Real radius, Color fill,
                                     Color outline);

@@ -43,11 +43,11 @@ struct ShapeDef {
   Real restitution = 0;                           ///< bounciness, >= 0 (0: none)
   std::optional<ShapeScale> scale;                ///< polygons: applied to `points` before hulling
   Filter filter;                                  ///< which shapes it may touch
-  bool is_sensor = false;              ///< detects overlap (sensor events), never pushes
-  bool enable_contact_events = true;   ///< begin/end contact events for this shape's pairs
-  bool enable_sensor_events = true;    ///< sensors see this shape (and a sensor reports at all)
-  bool enable_hit_events = false;      ///< hit events for this shape's pairs
-  std::uint64_t user_data = 0;         ///< anything the caller wants back from shape_user_data
+  bool is_sensor = false;                         ///< detects overlap (sensor events), never pushes
+  bool enable_contact_events = true;  ///< begin/end contact events for this shape's pairs
+  bool enable_sensor_events = true;   ///< sensors see this shape (and a sensor reports at all)
+  bool enable_hit_events = false;     ///< hit events for this shape's pairs
+  std::uint64_t user_data = 0;        ///< anything the caller wants back from shape_user_data
 
   /// @brief A box of half extents (hx, hy) centred at `center`, rotated by `angle` (radians).
   /// @throws InvalidArgumentError unless hx and hy are positive and finite.

@@ -12,10 +12,10 @@
 #include "mink/engine/debug_draw.hpp"
 #include "mink/engine/filter.hpp"
 #include "mink/engine/ids.hpp"
-#include "mink/narrowphase/ray_cast.hpp"
 #include "mink/engine/shape_def.hpp"
 #include "mink/engine/world_def.hpp"
 #include "mink/narrowphase/pose.hpp"
+#include "mink/narrowphase/ray_cast.hpp"
 #include "mink/narrowphase/shape_geometry.hpp"
 
 namespace mink {
@@ -176,7 +176,8 @@ class World {
   /// @brief Marks the body as a bullet (continuous collision against dynamic bodies too).
   void set_bullet(BodyId id, bool bullet);
   /// Sets a kinematic body's velocities so that it reaches `position`, `angle` at the end of
-  /// the next step of `time_step` seconds (moving platforms that follow a path).
+  /// the next step of `time_step` seconds run with WorldDef::substeps (moving platforms that
+  /// follow a path). Turns of less than a quarter turn per substep are reached.
   /// @throws InvalidArgumentError for a body that is not kinematic or non-finite arguments.
   void set_target_transform(BodyId id, const Vec2& position, Real angle, Real time_step);
   /// Overrides the mass properties the shapes give (a dynamic body only); kept until a shape
