@@ -42,6 +42,31 @@ void WorldState::wake(Body& b) {
   if (b.type == BodyType::static_body) return;
   b.awake = true;
   b.sleep_time = 0;
+  add_to_awake_list(b);
+}
+
+void WorldState::add_to_awake_list(Body& b) {
+  if (b.in_awake_list) return;
+  b.in_awake_list = true;
+  awake_list.push_back(static_cast<std::uint32_t>(&b - bodies.slots().data()));
+}
+
+// Drops the bodies that went to sleep, died or stopped moving, and restores slot order (the
+// order the solver and the events have always used).
+void WorldState::compact_awake_list() {
+  std::size_t kept = 0;
+  for (const std::uint32_t i : awake_list) {
+    Body& b = bodies[i];
+    if (b.alive && detail::moves(b)) {
+      awake_list[kept++] = i;
+    } else {
+      b.in_awake_list = false;
+    }
+  }
+  awake_list.resize(kept);
+  std::sort(awake_list.begin(), awake_list.end());
+  // A slot freed and reused within one step can be listed twice.
+  awake_list.erase(std::unique(awake_list.begin(), awake_list.end()), awake_list.end());
 }
 
 // Mass, centre of mass and inertia from the shapes (compute_mass), density-weighted, unless
@@ -118,6 +143,9 @@ BodyId World::create_body(const BodyDef& def) {
   b.enabled = def.enabled;
   b.fixed_rotation = def.fixed_rotation;
   b.bullet = def.bullet;
+  // A body that may not sleep starts awake (as in Box2D), whatever `awake` says.
+  if (def.type != BodyType::static_body && !def.allow_sleep) b.awake = true;
+  if (b.awake) w.add_to_awake_list(b);
   if (def.type == BodyType::dynamic) b.mass = b.inv_mass = 1;
   return w.body_id(index);
 }
@@ -125,7 +153,8 @@ BodyId World::create_body(const BodyDef& def) {
 void World::destroy_body(BodyId id) {
   Body& b = state_->body(id);
   while (!b.shapes.empty()) destroy_shape(state_->shape_id(b.shapes.back()));
-  state_->bodies.release(id.index);
+  b.contacts.clear();
+  state_->bodies.release(id.index);  // a stale awake-list entry is dropped next step
 }
 
 bool World::is_valid(BodyId id) const noexcept {
@@ -234,8 +263,11 @@ std::vector<ContactData> World::body_contacts(BodyId id) const {
   const WorldState& w = *state_;
   w.body(id);
   std::vector<ContactData> found;
-  for (const detail::Contact& c : w.contacts) {
-    if ((c.body_a != id.index && c.body_b != id.index) || c.manifold.point_count == 0) continue;
+  std::vector<std::uint32_t> indices = w.bodies[id.index].contacts;
+  std::sort(indices.begin(), indices.end());
+  for (const std::uint32_t i : indices) {
+    const detail::Contact& c = w.contacts[i];
+    if (c.manifold.point_count == 0) continue;
     found.push_back({w.shape_id(c.shape_a), w.shape_id(c.shape_b), c.manifold});
   }
   return found;
@@ -310,7 +342,7 @@ void World::set_awake(BodyId id, bool awake) {
   if (b.type == BodyType::static_body) return;
   if (awake) {
     state_->wake(b);
-  } else if (b.type == BodyType::dynamic) {
+  } else if (b.type == BodyType::dynamic && b.allow_sleep) {
     b.awake = false;
     b.sleep_time = state_->def.time_to_sleep;
     b.velocity = Vec2(0, 0);
@@ -329,7 +361,7 @@ void World::set_body_type(BodyId id, BodyType type) {
     b.angular_velocity = 0;
     b.awake = false;
   } else {
-    b.awake = true;
+    w.wake(b);
   }
   b.sleep_time = 0;
   w.update_mass(b);

@@ -43,6 +43,10 @@ struct alignas(64) Body {
   Vec2 previous_origin{0, 0};
   Rotation previous_rotation{};
   std::uint64_t moved_step = ~std::uint64_t{0};
+  // Contacts this body is in (indices into WorldState::contacts), so a step reaches the
+  // contacts of awake bodies without scanning the sleeping ones.
+  std::vector<std::uint32_t> contacts;
+  bool in_awake_list = false;
 
   Pose pose() const { return {origin, rotation}; }
 };

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <vector>
 
 #include "mink/narrowphase/collide.hpp"
 #include "world_state.hpp"
@@ -15,25 +17,60 @@ using detail::Body;
 using detail::Contact;
 using detail::Shape;
 
+namespace {
+
+void replace_in(std::vector<std::uint32_t>& list, std::uint32_t from, std::uint32_t to) {
+  *std::find(list.begin(), list.end(), from) = to;
+}
+
+void remove_from(std::vector<std::uint32_t>& list, std::uint32_t value) {
+  const auto at = std::find(list.begin(), list.end(), value);
+  *at = list.back();
+  list.pop_back();
+}
+
+}  // namespace
+
+void WorldState::set_touching(Contact& c, bool touching) {
+  if (c.touching == touching) return;
+  c.touching = touching;
+  if (touching) {
+    ++touching_count;
+  } else {
+    --touching_count;
+  }
+}
+
 void WorldState::destroy_contact(std::uint32_t index) {
   Contact& c = contacts[index];
   if (c.touching && c.events) end_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b)});
+  set_touching(c, false);
   contact_index.erase(detail::pair_key(c.proxy_a, c.proxy_b));
+  remove_from(bodies[c.body_a].contacts, index);
+  remove_from(bodies[c.body_b].contacts, index);
   const std::uint32_t last = static_cast<std::uint32_t>(contacts.size() - 1);
   if (index != last) {
     contacts[index] = contacts[last];
-    contact_index[detail::pair_key(contacts[index].proxy_a, contacts[index].proxy_b)] = index;
+    Contact& moved = contacts[index];
+    contact_index[detail::pair_key(moved.proxy_a, moved.proxy_b)] = index;
+    replace_in(bodies[moved.body_a].contacts, last, index);
+    replace_in(bodies[moved.body_b].contacts, last, index);
   }
   contacts.pop_back();
 }
 
 void WorldState::destroy_shape_contacts(std::uint32_t shape_index) {
-  // Destruction is rare: a scan keeps contacts free of per-shape lists.
-  for (std::uint32_t i = static_cast<std::uint32_t>(contacts.size()); i-- > 0;) {
-    Contact& c = contacts[i];
-    if (c.shape_a != shape_index && c.shape_b != shape_index) continue;
-    wake(bodies[c.body_a]);
-    wake(bodies[c.body_b]);
+  // Highest index first, so the swap-removal never moves a contact still to be visited.
+  std::vector<std::uint32_t> doomed;
+  for (const std::uint32_t i : bodies[shapes[shape_index].body].contacts) {
+    if (contacts[i].shape_a == shape_index || contacts[i].shape_b == shape_index) {
+      doomed.push_back(i);
+    }
+  }
+  std::sort(doomed.begin(), doomed.end(), std::greater<>());
+  for (const std::uint32_t i : doomed) {
+    wake(bodies[contacts[i].body_a]);
+    wake(bodies[contacts[i].body_b]);
     destroy_contact(i);
   }
 }
@@ -87,8 +124,11 @@ void WorldState::update_pairs() {
     c.sharp_polygons = shape_a.type == ShapeType::polygon && shape_b.type == ShapeType::polygon &&
                        detail::shape_radius(shape_a.geometry) == 0 &&
                        detail::shape_radius(shape_b.geometry) == 0;
-    contact_index.emplace(key, static_cast<std::uint32_t>(contacts.size()));
+    const auto index = static_cast<std::uint32_t>(contacts.size());
+    contact_index.emplace(key, index);
     contacts.push_back(c);
+    bodies[c.body_a].contacts.push_back(index);
+    bodies[c.body_b].contacts.push_back(index);
   }
 }
 
@@ -121,10 +161,22 @@ void WorldState::collide() {
   const Real touching_distance = 4 * def.linear_slop;
   const bool reuse = def.reuse_manifolds;
   const Real reuse_tolerance = 0.1 * def.linear_slop;
-  for (Contact& c : contacts) {
+  // The contacts of moving bodies, in contact order (the order events and the solver use).
+  compact_awake_list();
+  step_contacts.clear();
+  for (const std::uint32_t i : awake_list) {
+    for (const std::uint32_t ci : bodies[i].contacts) {
+      if (contacts[ci].collided_step == step_count) continue;
+      contacts[ci].collided_step = step_count;
+      step_contacts.push_back(ci);
+    }
+  }
+  std::sort(step_contacts.begin(), step_contacts.end());
+  counters.collided_contacts = step_contacts.size();
+  for (const std::uint32_t ci : step_contacts) {
+    Contact& c = contacts[ci];
     const Body& body_a = bodies[c.body_a];
     const Body& body_b = bodies[c.body_b];
-    if (!detail::moves(body_a) && !detail::moves(body_b)) continue;  // asleep or static
     const Shape& shape_a = shapes[c.shape_a];
     const Shape& shape_b = shapes[c.shape_b];
     const bool was_touching = c.touching;
@@ -209,7 +261,7 @@ void WorldState::collide() {
       const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
       touching = touching || p.separation < touching_distance;
     }
-    c.touching = touching;
+    set_touching(c, touching);
     if (!c.events) continue;
     if (touching && !was_touching) {
       begin_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b), c.manifold});

@@ -36,6 +36,7 @@ struct Contact {
   // Fastest normal approach over the points before the solve, and where (hit events only).
   Real approach_speed = 0;
   Vec2 approach_point{0, 0};
+  std::uint64_t collided_step = ~std::uint64_t{0};  // dedupes a step's visits from two bodies
   ManifoldCache cache;
 };
 

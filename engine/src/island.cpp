@@ -9,61 +9,82 @@ namespace mink {
 using detail::Body;
 using detail::Contact;
 
-namespace {
-
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
-  while (parent[i] != i) {
-    parent[i] = parent[parent[i]];  // path halving
-    i = parent[i];
-  }
-  return i;
-}
-
-}  // namespace
-
-// Islands by union-find over touching contacts between dynamic bodies, every step. An island
+// Islands are found from the awake bodies only: a walk over touching contacts between dynamic
+// bodies gathers each island that holds an awake body (sleeping members included, so that they
+// wake with it), and an island of sleeping bodies is never visited: it costs nothing. An island
 // sleeps when all its bodies have been slow for time_to_sleep, and wakes as a whole when any
 // member is moving (woken by the API, hit by an awake body or a moving kinematic body).
 void WorldState::update_islands() {
-  const std::size_t n = bodies.size();
-  island_parent.resize(n);
-  island_min_sleep.assign(n, def.time_to_sleep);
-  for (std::uint32_t i = 0; i < n; ++i) island_parent[i] = i;
-  for (const Contact& c : contacts) {
+  if (island_stamp.size() < bodies.size()) island_stamp.resize(bodies.size(), ~std::uint64_t{0});
+  // A moving kinematic body keeps what it touches awake.
+  for (const std::uint32_t ci : step_contacts) {
+    const Contact& c = contacts[ci];
     if (!c.touching) continue;
     Body& a = bodies[c.body_a];
     Body& b = bodies[c.body_b];
-    if (a.type == BodyType::dynamic && b.type == BodyType::dynamic) {
-      const std::uint32_t ra = find_root(island_parent, c.body_a);
-      const std::uint32_t rb = find_root(island_parent, c.body_b);
-      if (ra != rb) island_parent[std::max(ra, rb)] = std::min(ra, rb);
-    } else if (a.type == BodyType::kinematic || b.type == BodyType::kinematic) {
-      Body& kinematic = a.type == BodyType::kinematic ? a : b;
-      Body& other = a.type == BodyType::kinematic ? b : a;
-      if (kinematic.velocity.squaredNorm() > 0 || kinematic.angular_velocity != 0) {
-        other.sleep_time = 0;
+    if (a.type != BodyType::kinematic && b.type != BodyType::kinematic) continue;
+    Body& kinematic = a.type == BodyType::kinematic ? a : b;
+    Body& other = a.type == BodyType::kinematic ? b : a;
+    if (kinematic.velocity.squaredNorm() > 0 || kinematic.angular_velocity != 0) {
+      other.sleep_time = 0;
+    }
+  }
+  std::size_t islands = 0;
+  woken.clear();
+  // Indexed: waking appends to the list, and the woken are reached by the walk anyway.
+  for (std::size_t k = 0, listed = awake_list.size(); k < listed; ++k) {
+    const std::uint32_t start = awake_list[k];
+    const Body& first = bodies[start];
+    if (first.type != BodyType::dynamic || island_stamp[start] == step_count) continue;
+    island_members.clear();
+    island_stack.assign(1, start);
+    island_stamp[start] = step_count;
+    Real min_sleep = def.time_to_sleep;
+    while (!island_stack.empty()) {
+      const std::uint32_t i = island_stack.back();
+      island_stack.pop_back();
+      island_members.push_back(i);
+      const Body& b = bodies[i];
+      min_sleep = std::min(min_sleep, b.allow_sleep ? b.sleep_time : Real{0});
+      for (const std::uint32_t ci : b.contacts) {
+        const Contact& c = contacts[ci];
+        if (!c.touching) continue;
+        const std::uint32_t j = c.body_a == i ? c.body_b : c.body_a;
+        const Body& other = bodies[j];
+        if (other.type != BodyType::dynamic || !other.enabled || island_stamp[j] == step_count) {
+          continue;
+        }
+        island_stamp[j] = step_count;
+        island_stack.push_back(j);
+      }
+    }
+    const bool awake = min_sleep < def.time_to_sleep;
+    if (awake) ++islands;
+    for (const std::uint32_t i : island_members) {
+      Body& b = bodies[i];
+      if (awake && !b.awake) {
+        b.awake = true;
+        add_to_awake_list(b);
+        woken.push_back(i);
+      } else if (!awake && b.awake) {
+        b.velocity = Vec2(0, 0);
+        b.angular_velocity = 0;
+        b.awake = false;
+        fell_asleep.push_back(i);
       }
     }
   }
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const Body& b = bodies[i];
-    if (!b.alive || !b.enabled || b.type != BodyType::dynamic) continue;
-    const std::uint32_t root = find_root(island_parent, i);
-    island_min_sleep[root] = std::min(island_min_sleep[root], b.allow_sleep ? b.sleep_time : 0);
-  }
-  std::size_t islands = 0;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    Body& b = bodies[i];
-    if (!b.alive || !b.enabled || b.type != BodyType::dynamic) continue;
-    const std::uint32_t root = find_root(island_parent, i);
-    const bool awake = island_min_sleep[root] < def.time_to_sleep;
-    if (awake && root == i) ++islands;
-    if (!awake && b.awake) {
-      b.velocity = Vec2(0, 0);
-      b.angular_velocity = 0;
-      fell_asleep.push_back(i);
+  std::sort(fell_asleep.begin(), fell_asleep.end());
+  // Contacts among the bodies this pass woke join the step (with the manifolds they slept with).
+  if (!woken.empty()) {
+    for (const std::uint32_t i : woken) {
+      for (const std::uint32_t ci : bodies[i].contacts) {
+        if (contacts[ci].collided_step == step_count) continue;
+        contacts[ci].collided_step = step_count;
+        step_contacts.push_back(ci);
+      }
     }
-    b.awake = awake;
+    std::sort(step_contacts.begin(), step_contacts.end());
   }
   counters.islands = islands;
 }

@@ -20,11 +20,12 @@ void WorldState::prepare_contacts() {
   solver_params.clear();
   solver_to_body.clear();
   solver_info.clear();
-  body_solver_index.resize(bodies.size());
-  for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+  // Entries stay -1 between steps: only this step's solver bodies are set, and reset in
+  // finish_step, so sleeping bodies are never touched.
+  body_solver_index.resize(bodies.size(), -1);
+  compact_awake_list();
+  for (const std::uint32_t i : awake_list) {
     const Body& b = bodies[i];
-    body_solver_index[i] = -1;
-    if (!b.alive || !detail::moves(b)) continue;
     body_solver_index[i] = static_cast<std::int32_t>(solver_bodies.size());
     solver_info.push_back({b.center.x(), b.center.y(), b.inv_mass, b.inv_inertia});
     detail::SolverBody sb;
@@ -58,7 +59,7 @@ void WorldState::prepare_contacts() {
   // them first, then each constraint is built straight into its slot.
   constraint_contacts.clear();
   constraint_bodies.clear();
-  for (std::uint32_t ci = 0; ci < contacts.size(); ++ci) {
+  for (const std::uint32_t ci : step_contacts) {
     const Contact& c = contacts[ci];
     if (c.manifold.point_count == 0) continue;
     const std::int32_t ia = body_solver_index[c.body_a], ib = body_solver_index[c.body_b];
@@ -231,11 +232,10 @@ void WorldState::finish_step() {
         move_events.begin(), move_events.end(),
         [](const BodyMoveEvent& x, const BodyMoveEvent& y) { return x.body.index < y.body.index; });
   }
-  std::size_t touching = 0;
-  for (const Contact& c : contacts) touching += c.touching ? 1 : 0;
+  for (const std::uint32_t i : solver_to_body) body_solver_index[i] = -1;
   counters.broadphase_pairs = broadphase.pairs().size();
   counters.contacts = contacts.size();
-  counters.touching_contacts = touching;
+  counters.touching_contacts = touching_count;
 }
 
 }  // namespace mink

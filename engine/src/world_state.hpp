@@ -33,6 +33,12 @@ struct WorldState {
   std::vector<detail::Contact> contacts;
   std::unordered_map<std::uint64_t, std::uint32_t> contact_index;
   std::vector<detail::SensorState> sensors;  // sorted by sensor shape slot
+  std::size_t touching_count = 0;            // contacts whose touching flag is set
+
+  // Bodies that may be awake (every awake body is here; stale entries are dropped once a
+  // step): a step visits these and their contacts only, so a sleeping island costs nothing.
+  std::vector<std::uint32_t> awake_list;
+  std::vector<std::uint32_t> step_contacts;  // contacts of moving bodies this step, in order
 
   std::vector<ContactBeginEvent> begin_events;
   std::vector<ContactEndEvent> end_events;
@@ -61,8 +67,8 @@ struct WorldState {
   std::vector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
   std::vector<detail::ConstraintBodies> constraint_bodies, sorted_bodies;
   detail::ContactSolver contact_solver;
-  std::vector<std::uint32_t> island_parent;
-  std::vector<Real> island_min_sleep;
+  std::vector<std::uint64_t> island_stamp;  // per body: the step whose island pass reached it
+  std::vector<std::uint32_t> island_stack, island_members, woken;
   std::vector<ProxyId> query_scratch;
 
   detail::Body& body(BodyId id) { return bodies.get(id, serial, "body"); }
@@ -75,6 +81,8 @@ struct WorldState {
   void clear_events();
   // body.cpp
   void wake(detail::Body& body);
+  void add_to_awake_list(detail::Body& body);
+  void compact_awake_list();
   void update_mass(detail::Body& body);
   // shape.cpp
   void update_shape_aabb(detail::Shape& shape, const detail::Body& body, Real dt);
@@ -88,6 +96,7 @@ struct WorldState {
   bool smooth_seam(detail::Contact& contact, Real speculative_distance);
   // contact.cpp
   void destroy_contact(std::uint32_t index);
+  void set_touching(detail::Contact& contact, bool touching);
   void destroy_shape_contacts(std::uint32_t shape_index);
   bool should_make_contact(std::uint32_t shape_a, std::uint32_t shape_b) const;
   void update_pairs();

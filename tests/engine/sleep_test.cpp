@@ -105,3 +105,35 @@ TEST(Sleep, PuttingABodyToSleepThroughTheApi) {
 
 }  // namespace
 }  // namespace mink
+
+namespace mink {
+namespace {
+
+// A sleeping island costs nothing: once a large world sleeps, a step visits no body and no
+// contact (the sleep benchmark, bench/run_sleep.sh, shows what that saves in time).
+TEST(SleepCost, ASleepingWorldStepsWithoutVisitingItsBodiesOrContacts) {
+  World world = build_world(many_pyramids_scene(3, 4, 6));
+  int steps = 0;
+  do {
+    world.step();
+  } while (world.counters().awake_bodies > 0 && ++steps < 1000);
+  ASSERT_EQ(world.counters().awake_bodies, 0u);
+  const std::size_t contacts = world.counters().contacts;
+  EXPECT_GT(contacts, 200u);
+  for (int i = 0; i < 5; ++i) {
+    world.step();
+    EXPECT_EQ(world.counters().collided_contacts, 0u);
+    EXPECT_EQ(world.counters().awake_bodies, 0u);
+    EXPECT_TRUE(world.body_move_events().empty());
+    EXPECT_EQ(world.counters().contacts, contacts);  // kept, not thrown away
+  }
+  // Touching one box wakes its pyramid, and only its pyramid's contacts are visited.
+  const BodyId top = world.bodies().back();
+  world.apply_linear_impulse(top, Vec2(0.1, 0), world.world_center(top));
+  world.step();
+  EXPECT_GT(world.counters().collided_contacts, 0u);
+  EXPECT_LT(world.counters().collided_contacts, contacts / 4);
+}
+
+}  // namespace
+}  // namespace mink

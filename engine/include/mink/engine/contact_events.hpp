@@ -65,6 +65,7 @@ struct StepCounters {
   std::size_t broadphase_pairs = 0;      ///< overlapping box pairs the broadphase reported
   std::size_t contacts = 0;              ///< pairs with a contact record
   std::size_t touching_contacts = 0;     ///< contacts with manifold points within touching distance
+  std::size_t collided_contacts = 0;     ///< contacts the narrowphase visited (of moving bodies)
   std::size_t awake_bodies = 0;          ///< bodies simulated (not asleep)
   std::size_t islands = 0;               ///< awake islands
   std::size_t constraint_colors = 0;     ///< graph colours the solver used
