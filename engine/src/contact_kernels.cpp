@@ -1,0 +1,176 @@
+// The soft-step contact kernels, one constraint at a time: integration of a substep, warm
+// start, the solve with and without bias, restitution. The wide (SIMD) kernels in
+// contact_kernels_wide.cpp are written lane for lane like these, so both give the same bits.
+
+#include "contact_kernels.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace mink::detail {
+
+Softness make_softness(Real hertz, Real damping_ratio, Real h) {
+  if (hertz == 0) return {0, 1, 0};
+  const Real omega = 2 * std::numbers::pi * hertz;
+  const Real a1 = 2 * damping_ratio + h * omega;
+  const Real a2 = h * omega * a1;
+  const Real a3 = 1 / (1 + a2);
+  return {omega / a1, a2 * a3, a3};
+}
+
+namespace {
+
+// Written exactly as the wide path's lane-wise selects, so both give the same bits (even the
+// sign of a zero).
+inline Real smax(Real a, Real b) {
+  return a > b ? a : b;
+}
+inline Real smin(Real a, Real b) {
+  return a < b ? a : b;
+}
+
+}  // namespace
+
+void integrate_velocities(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
+                          const SolverSettings& settings) {
+  const Real max_speed_squared = settings.max_linear_speed * settings.max_linear_speed;
+  // A body may turn at most an eighth of a turn per substep: beyond that the rotation
+  // integration below is meaningless.
+  const Real max_angular_speed = 0.25 * std::numbers::pi * settings.inv_h;
+  const std::size_t count = bodies.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    SolverBody& body = bodies[i];
+    const SolverBodyParams& p = params[i];
+    Real vx = body.vx * p.linear_damping + p.dvx;
+    Real vy = body.vy * p.linear_damping + p.dvy;
+    Real w = body.w * p.angular_damping + p.dw;
+    const Real speed_squared = vx * vx + vy * vy;
+    if (speed_squared > max_speed_squared) {
+      const Real ratio = settings.max_linear_speed / std::sqrt(speed_squared);
+      vx *= ratio;
+      vy *= ratio;
+    }
+    w = std::clamp(w, -max_angular_speed, max_angular_speed);
+    body.vx = vx;
+    body.vy = vy;
+    body.w = w;
+  }
+}
+
+void integrate_positions(std::span<SolverBody> bodies, Real h) {
+  for (SolverBody& body : bodies) {
+    body.dpx += h * body.vx;
+    body.dpy += h * body.vy;
+    // q += h * w * perp(q), renormalised: exact direction, a cheap stand-in for sin/cos.
+    const Real hw = h * body.w;
+    const Real qc = body.qc - hw * body.qs;
+    const Real qs = body.qs + hw * body.qc;
+    const Real inv_length = 1 / std::sqrt(qc * qc + qs * qs);
+    body.qc = qc * inv_length;
+    body.qs = qs * inv_length;
+  }
+}
+
+void warm_start_one(SolverBody* bodies, ContactConstraint& c) {
+  SolverBody& a = bodies[c.body_a];
+  SolverBody& b = bodies[c.body_b];
+  const Real tx = c.ny, ty = -c.nx;
+  Real vax = a.vx, vay = a.vy, wa = a.w, vbx = b.vx, vby = b.vy, wb = b.w;
+  for (int j = 0; j < 2; ++j) {
+    const ContactConstraintPoint& p = c.points[j];
+    const Real px = p.normal_impulse * c.nx + p.tangent_impulse * tx;
+    const Real py = p.normal_impulse * c.ny + p.tangent_impulse * ty;
+    wa -= c.inv_inertia_a * (p.ax * py - p.ay * px);
+    vax -= c.inv_mass_a * px;
+    vay -= c.inv_mass_a * py;
+    wb += c.inv_inertia_b * (p.bx * py - p.by * px);
+    vbx += c.inv_mass_b * px;
+    vby += c.inv_mass_b * py;
+  }
+  a.vx = vax, a.vy = vay, a.w = wa;
+  b.vx = vbx, b.vy = vby, b.w = wb;
+}
+
+void solve_one(SolverBody* bodies, ContactConstraint& c, Real inv_h, Real max_push, bool use_bias) {
+  SolverBody& a = bodies[c.body_a];
+  SolverBody& b = bodies[c.body_b];
+  const Real ma = c.inv_mass_a, ia = c.inv_inertia_a, mb = c.inv_mass_b, ib = c.inv_inertia_b;
+  Real vax = a.vx, vay = a.vy, wa = a.w, vbx = b.vx, vby = b.vy, wb = b.w;
+  const Real dpx = b.dpx - a.dpx, dpy = b.dpy - a.dpy;
+  const Real nx = c.nx, ny = c.ny;
+  const auto apply = [&](const ContactConstraintPoint& p, Real px, Real py) {
+    vax -= ma * px;
+    vay -= ma * py;
+    wa -= ia * (p.ax * py - p.ay * px);
+    vbx += mb * px;
+    vby += mb * py;
+    wb += ib * (p.bx * py - p.by * px);
+  };
+  for (int j = 0; j < 2; ++j) {
+    ContactConstraintPoint& p = c.points[j];
+    // Separation now: anchors moved with their bodies since the step began.
+    const Real prax = a.qc * p.ax - a.qs * p.ay, pray = a.qs * p.ax + a.qc * p.ay;
+    const Real prbx = b.qc * p.bx - b.qs * p.by, prby = b.qs * p.bx + b.qc * p.by;
+    const Real s = (dpx + prbx - prax) * nx + (dpy + prby - pray) * ny + p.base_separation;
+    Real bias = 0, mass_scale = 1, impulse_scale = 0;
+    if (s > 0) {
+      bias = s * inv_h;  // speculative: close the gap in this substep, no more
+    } else if (use_bias) {
+      bias = smax(c.bias_rate * s, -max_push);
+      mass_scale = c.mass_scale;
+      impulse_scale = c.impulse_scale;
+    }
+    const Real dvx = (vbx - wb * p.by) - (vax - wa * p.ay);
+    const Real dvy = (vby + wb * p.bx) - (vay + wa * p.ax);
+    const Real vn = dvx * nx + dvy * ny;
+    Real impulse = -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
+    const Real accumulated = smax(p.normal_impulse + impulse, Real{0});
+    impulse = accumulated - p.normal_impulse;
+    p.normal_impulse = accumulated;
+    p.max_normal_impulse = smax(p.max_normal_impulse, impulse);
+    apply(p, impulse * nx, impulse * ny);
+  }
+  const Real tx = ny, ty = -nx;
+  for (int j = 0; j < 2; ++j) {
+    ContactConstraintPoint& p = c.points[j];
+    const Real dvx = (vbx - wb * p.by) - (vax - wa * p.ay);
+    const Real dvy = (vby + wb * p.bx) - (vay + wa * p.ax);
+    const Real vt = dvx * tx + dvy * ty;
+    const Real limit = c.friction * p.normal_impulse;
+    const Real accumulated = smin(smax(p.tangent_impulse - p.tangent_mass * vt, -limit), limit);
+    const Real impulse = accumulated - p.tangent_impulse;
+    p.tangent_impulse = accumulated;
+    apply(p, impulse * tx, impulse * ty);
+  }
+  a.vx = vax, a.vy = vay, a.w = wa;
+  b.vx = vbx, b.vy = vby, b.w = wb;
+}
+
+void restitution_one(SolverBody* bodies, ContactConstraint& c, Real threshold) {
+  if (c.restitution == 0) return;
+  SolverBody& a = bodies[c.body_a];
+  SolverBody& b = bodies[c.body_b];
+  for (int j = 0; j < 2; ++j) {
+    ContactConstraintPoint& p = c.points[j];
+    // Only points that approached fast enough and actually pushed bounce.
+    if (p.relative_velocity > -threshold || p.max_normal_impulse == 0) continue;
+    const Real dvx = (b.vx - b.w * p.by) - (a.vx - a.w * p.ay);
+    const Real dvy = (b.vy + b.w * p.bx) - (a.vy + a.w * p.ax);
+    const Real vn = dvx * c.nx + dvy * c.ny;
+    Real impulse = -p.normal_mass * (vn + c.restitution * p.relative_velocity);
+    const Real accumulated = smax(p.normal_impulse + impulse, Real{0});
+    impulse = accumulated - p.normal_impulse;
+    p.normal_impulse = accumulated;
+    p.max_normal_impulse = smax(p.max_normal_impulse, impulse);
+    const Real px = impulse * c.nx, py = impulse * c.ny;
+    a.vx -= c.inv_mass_a * px;
+    a.vy -= c.inv_mass_a * py;
+    a.w -= c.inv_inertia_a * (p.ax * py - p.ay * px);
+    b.vx += c.inv_mass_b * px;
+    b.vy += c.inv_mass_b * py;
+    b.w += c.inv_inertia_b * (p.bx * py - p.by * px);
+  }
+}
+
+}  // namespace mink::detail

@@ -1,0 +1,185 @@
+// The soft-step contact kernels four constraints at a time, one per SIMD lane (GCC vector
+// extensions), compiled for AVX2 and for baseline x86-64 and picked at load time. No fused
+// multiply-add is used, so both builds and the one-at-a-time kernels give bitwise equal results.
+
+#include "contact_kernels.hpp"
+
+// The wide helpers pass vectors by value between internal functions only; the ABI note GCC
+// gives for AVX-sized vectors without AVX enabled does not concern them.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+namespace mink::detail {
+
+namespace {
+
+struct WideBody {
+  Wide vx, vy, w, dpx, dpy, qc, qs;
+};
+
+inline Wide splat(Real x) {
+  return Wide{x, x, x, x};
+}
+inline Wide wmax(Wide a, Wide b) {
+  return a > b ? a : b;
+}
+inline Wide wmin(Wide a, Wide b) {
+  return a < b ? a : b;
+}
+
+inline WideBody gather(const SolverBody* bodies, const std::int32_t* index) {
+  const SolverBody& b0 = bodies[index[0]];
+  const SolverBody& b1 = bodies[index[1]];
+  const SolverBody& b2 = bodies[index[2]];
+  const SolverBody& b3 = bodies[index[3]];
+  return {Wide{b0.vx, b1.vx, b2.vx, b3.vx},     Wide{b0.vy, b1.vy, b2.vy, b3.vy},
+          Wide{b0.w, b1.w, b2.w, b3.w},         Wide{b0.dpx, b1.dpx, b2.dpx, b3.dpx},
+          Wide{b0.dpy, b1.dpy, b2.dpy, b3.dpy}, Wide{b0.qc, b1.qc, b2.qc, b3.qc},
+          Wide{b0.qs, b1.qs, b2.qs, b3.qs}};
+}
+
+// Only velocities change while solving. Lanes sharing the still body write back the same
+// zeros it holds (its masses are zero), so the order of those writes does not matter.
+inline void scatter(SolverBody* bodies, const std::int32_t* index, const WideBody& w) {
+  for (int lane = 0; lane < 4; ++lane) {
+    SolverBody& b = bodies[index[lane]];
+    b.vx = w.vx[lane];
+    b.vy = w.vy[lane];
+    b.w = w.w[lane];
+  }
+}
+
+// `Track` keeps each point's largest single impulse of the step for restitution; scenes
+// without restitution skip that store.
+template <bool Track>
+__attribute__((always_inline)) inline void solve_wide_impl(
+    SolverBody* bodies, WideConstraint* begin, WideConstraint* end, WideMaxImpulse* max_impulse,
+    Real inv_h_scalar, Real max_push_scalar, bool use_bias) {
+  const Wide zero = splat(0), one = splat(1), inv_h = splat(inv_h_scalar),
+             max_push = splat(-max_push_scalar);
+  for (WideConstraint* c = begin; c != end; ++c) {
+    WideBody a = gather(bodies, c->body_a);
+    WideBody b = gather(bodies, c->body_b);
+    const Wide ma = c->inv_mass_a, ia = c->inv_inertia_a, mb = c->inv_mass_b, ib = c->inv_inertia_b;
+    const Wide dpx = b.dpx - a.dpx, dpy = b.dpy - a.dpy;
+    const Wide nx = c->nx, ny = c->ny;
+    const auto apply = [&](const WideConstraint::Point& p, Wide bx, Wide by, Wide px, Wide py) {
+      a.vx -= ma * px;
+      a.vy -= ma * py;
+      a.w -= ia * (p.ax * py - p.ay * px);
+      b.vx += mb * px;
+      b.vy += mb * py;
+      b.w += ib * (bx * py - by * px);
+    };
+    Wide bxs[2], bys[2];
+    for (int j = 0; j < 2; ++j) {
+      WideConstraint::Point& p = c->points[j];
+      const Wide bx = p.ax + c->dx, by = p.ay + c->dy;
+      bxs[j] = bx;
+      bys[j] = by;
+      const Wide prax = a.qc * p.ax - a.qs * p.ay, pray = a.qs * p.ax + a.qc * p.ay;
+      const Wide prbx = b.qc * bx - b.qs * by, prby = b.qs * bx + b.qc * by;
+      const Wide s = (dpx + prbx - prax) * nx + (dpy + prby - pray) * ny + p.base_separation;
+      const auto speculative = s > zero;
+      Wide bias = speculative ? s * inv_h : zero;
+      Wide mass_scale = one, impulse_scale = zero;
+      if (use_bias) {
+        bias = speculative ? bias : wmax(c->bias_rate * s, max_push);
+        mass_scale = speculative ? one : c->mass_scale;
+        impulse_scale = speculative ? zero : c->impulse_scale;
+      }
+      const Wide dvx = (b.vx - b.w * by) - (a.vx - a.w * p.ay);
+      const Wide dvy = (b.vy + b.w * bx) - (a.vy + a.w * p.ax);
+      const Wide vn = dvx * nx + dvy * ny;
+      Wide impulse = -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
+      const Wide accumulated = wmax(p.normal_impulse + impulse, zero);
+      impulse = accumulated - p.normal_impulse;
+      p.normal_impulse = accumulated;
+      if constexpr (Track) {
+        Wide& m = max_impulse[c - begin].point[j];
+        m = wmax(m, impulse);
+      }
+      apply(p, bx, by, impulse * nx, impulse * ny);
+    }
+    const Wide tx = ny, ty = -nx;
+    for (int j = 0; j < 2; ++j) {
+      WideConstraint::Point& p = c->points[j];
+      const Wide bx = bxs[j], by = bys[j];
+      const Wide dvx = (b.vx - b.w * by) - (a.vx - a.w * p.ay);
+      const Wide dvy = (b.vy + b.w * bx) - (a.vy + a.w * p.ax);
+      const Wide vt = dvx * tx + dvy * ty;
+      const Wide limit = c->friction * p.normal_impulse;
+      const Wide accumulated = wmin(wmax(p.tangent_impulse - p.tangent_mass * vt, -limit), limit);
+      const Wide impulse = accumulated - p.tangent_impulse;
+      p.tangent_impulse = accumulated;
+      apply(p, bx, by, impulse * tx, impulse * ty);
+    }
+    scatter(bodies, c->body_a, a);
+    scatter(bodies, c->body_b, b);
+  }
+}
+
+}  // namespace
+
+__attribute__((target_clones("avx2", "default"))) void warm_start_wide(SolverBody* bodies,
+                                                                       WideConstraint* begin,
+                                                                       WideConstraint* end) {
+  for (WideConstraint* c = begin; c != end; ++c) {
+    WideBody a = gather(bodies, c->body_a);
+    WideBody b = gather(bodies, c->body_b);
+    const Wide tx = c->ny, ty = -c->nx;
+    for (int j = 0; j < 2; ++j) {
+      const WideConstraint::Point& p = c->points[j];
+      const Wide bx = p.ax + c->dx, by = p.ay + c->dy;
+      const Wide px = p.normal_impulse * c->nx + p.tangent_impulse * tx;
+      const Wide py = p.normal_impulse * c->ny + p.tangent_impulse * ty;
+      a.w -= c->inv_inertia_a * (p.ax * py - p.ay * px);
+      a.vx -= c->inv_mass_a * px;
+      a.vy -= c->inv_mass_a * py;
+      b.w += c->inv_inertia_b * (bx * py - by * px);
+      b.vx += c->inv_mass_b * px;
+      b.vy += c->inv_mass_b * py;
+    }
+    scatter(bodies, c->body_a, a);
+    scatter(bodies, c->body_b, b);
+  }
+}
+
+__attribute__((target_clones("avx2", "default"))) void solve_wide(
+    SolverBody* bodies, WideConstraint* begin, WideConstraint* end, WideMaxImpulse* max_impulse,
+    Real inv_h, Real max_push, bool use_bias) {
+  if (max_impulse) {
+    solve_wide_impl<true>(bodies, begin, end, max_impulse, inv_h, max_push, use_bias);
+  } else {
+    solve_wide_impl<false>(bodies, begin, end, nullptr, inv_h, max_push, use_bias);
+  }
+}
+
+void pack(WideConstraint& w, int lane, const ContactConstraint& c) {
+  w.body_a[lane] = c.body_a;
+  w.body_b[lane] = c.body_b;
+  w.inv_mass_a[lane] = c.inv_mass_a;
+  w.inv_inertia_a[lane] = c.inv_inertia_a;
+  w.inv_mass_b[lane] = c.inv_mass_b;
+  w.inv_inertia_b[lane] = c.inv_inertia_b;
+  w.nx[lane] = c.nx;
+  w.ny[lane] = c.ny;
+  w.friction[lane] = c.friction;
+  w.bias_rate[lane] = c.bias_rate;
+  w.mass_scale[lane] = c.mass_scale;
+  w.impulse_scale[lane] = c.impulse_scale;
+  w.dx[lane] = c.dx;
+  w.dy[lane] = c.dy;
+  for (int j = 0; j < 2; ++j) {
+    const ContactConstraintPoint& p = c.points[j];
+    WideConstraint::Point& q = w.points[j];
+    q.ax[lane] = p.ax;
+    q.ay[lane] = p.ay;
+    q.base_separation[lane] = p.base_separation;
+    q.normal_mass[lane] = p.normal_mass;
+    q.tangent_mass[lane] = p.tangent_mass;
+    q.normal_impulse[lane] = p.normal_impulse;
+    q.tangent_impulse[lane] = p.tangent_impulse;
+  }
+}
+
+}  // namespace mink::detail
