@@ -41,8 +41,43 @@ void WorldState::set_touching(Contact& c, bool touching) {
   }
 }
 
+void WorldState::update_color(std::uint32_t index) {
+  Contact& c = contacts[index];
+  const bool acting = c.manifold.point_count > 0;
+  if (acting && c.color == detail::kNoColor) {
+    newly_acting.push_back(index);
+  } else if (!acting && c.color != detail::kNoColor) {
+    graph.remove(c.color, c.body_a, c.a_fixed, c.body_b, c.b_fixed);
+    c.color = detail::kNoColor;
+  }
+}
+
+// Colours for the contacts that began acting this step, given in the order of their first
+// dynamic body (then contact order): bodies made bottom row first then take the low colours
+// bottom up, which Gauss-Seidel needs to carry a stack's weight down in few iterations.
+void WorldState::assign_new_colors() {
+  const auto key = [&](std::uint32_t index) {
+    const Contact& c = contacts[index];
+    return bodies[c.body_a].type == BodyType::dynamic ? c.body_a : c.body_b;
+  };
+  std::sort(newly_acting.begin(), newly_acting.end(), [&](std::uint32_t x, std::uint32_t y) {
+    const std::uint32_t kx = key(x), ky = key(y);
+    return kx != ky ? kx < ky : x < y;
+  });
+  for (const std::uint32_t index : newly_acting) {
+    Contact& c = contacts[index];
+    c.a_fixed = bodies[c.body_a].type != BodyType::dynamic;
+    c.b_fixed = bodies[c.body_b].type != BodyType::dynamic;
+    c.color = graph.add(c.body_a, c.a_fixed, c.body_b, c.b_fixed);
+  }
+  newly_acting.clear();
+}
+
 void WorldState::destroy_contact(std::uint32_t index) {
   Contact& c = contacts[index];
+  if (c.color != detail::kNoColor) {
+    graph.remove(c.color, c.body_a, c.a_fixed, c.body_b, c.b_fixed);
+  }
   if (c.touching && c.events) end_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b)});
   set_touching(c, false);
   contact_index.erase(detail::pair_key(c.proxy_a, c.proxy_b));
@@ -254,6 +289,7 @@ void WorldState::collide() {
         }
       }
     }
+    update_color(ci);
     if (c.hit_events) measure_approach(c, body_a, body_b);
 
     bool touching = false;
@@ -269,6 +305,7 @@ void WorldState::collide() {
       end_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b)});
     }
   }
+  assign_new_colors();
 }
 
 }  // namespace mink

@@ -35,14 +35,14 @@
 #include <array>
 #include <utility>
 
+#include "constraint_graph.hpp"
 #include "contact_kernels.hpp"
 
 namespace mink::detail {
 
 namespace {
 
-// Colours before giving up on a constraint (it then joins the one-at-a-time overflow).
-constexpr std::size_t kColorCount = 24;
+constexpr std::size_t kColorCount = kGraphColors;
 
 }  // namespace
 
@@ -64,34 +64,17 @@ constexpr std::uint32_t kScalar = 1u << 31;
 }  // namespace
 
 void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::int32_t still,
-                          std::size_t body_count, bool wide) {
+                          bool wide) {
   wide_mode_ = wide;
   bouncy_ = false;
   still_ = still;
   restitution_.clear();
-  // Greedy colouring in constraint order (deterministic): the first colour where neither
-  // moving body is taken yet. Bodies the solver cannot move never block a colour.
-  const std::size_t words = (body_count + 63) / 64;
-  color_bits_.assign(kColorCount * words, 0);
+  // Colours come from the constraint graph, which keeps them from step to step.
   color_of_.resize(constraints.size());
   std::array<std::uint32_t, kColorCount + 1> counts{};
   for (std::uint32_t i = 0; i < constraints.size(); ++i) {
-    const std::int32_t a = constraints[i].a, b = constraints[i].b;
-    const bool a_fixed = constraints[i].a_fixed, b_fixed = constraints[i].b_fixed;
-    const std::uint64_t a_bit = a_fixed ? 0 : std::uint64_t{1} << (a & 63);
-    const std::uint64_t b_bit = b_fixed ? 0 : std::uint64_t{1} << (b & 63);
-    const std::size_t a_word = static_cast<std::size_t>(a) >> 6;
-    const std::size_t b_word = static_cast<std::size_t>(b) >> 6;
-    std::size_t color = 0;
-    for (std::uint64_t* bits = color_bits_.data(); color < kColorCount; ++color, bits += words) {
-      if (!(bits[a_word] & a_bit) && !(bits[b_word] & b_bit)) {
-        bits[a_word] |= a_bit;
-        bits[b_word] |= b_bit;
-        break;
-      }
-    }
-    color_of_[i] = static_cast<std::uint8_t>(color);
-    ++counts[color];
+    color_of_[i] = constraints[i].color;
+    ++counts[constraints[i].color];
   }
   overflow_count_ = counts[kColorCount];
   color_begin_.assign(kColorCount + 2, 0);

@@ -76,14 +76,16 @@ struct WideMaxImpulse;
 struct ConstraintBodies {
   std::int32_t a = 0, b = 0;
   bool a_fixed = false, b_fixed = false;
+  std::uint8_t color = 0;  // from the constraint graph (kOverflowColor: one at a time)
 };
 
-// The soft-step solver. begin() colours the constraint graph: within a colour no two
-// constraints share a moving body, so a colour's constraints are independent and are solved
-// four at a time in SIMD lanes (those left when the colours run out, one at a time after
-// them). set() then writes each constraint straight into its lane, so the step never builds
-// a scalar copy of every constraint. solve() runs every substep: integrate velocities, warm
-// start, solve with bias, integrate positions, relax without bias; then restitution.
+// The soft-step solver. begin() lays the constraints out by their colours from the constraint
+// graph (constraint_graph.hpp): within a colour no two constraints share a moving body, so a
+// colour's constraints are independent and are solved four at a time in SIMD lanes (the
+// overflow, one at a time after them). set() then writes each constraint straight into its lane, so
+// the step never builds a scalar copy of every constraint. solve() runs every substep: integrate
+// velocities, warm start, solve with bias, integrate positions, relax without bias; then
+// restitution.
 class ContactSolver {
  public:
   ContactSolver();
@@ -98,8 +100,7 @@ class ContactSolver {
   // false keeps every constraint scalar and solves them one at a time in the same colour
   // order: the slow twin the tests compare the SIMD path against (the results are bitwise
   // equal).
-  void begin(std::span<const ConstraintBodies> constraints, std::int32_t still,
-             std::size_t body_count, bool wide);
+  void begin(std::span<const ConstraintBodies> constraints, std::int32_t still, bool wide);
   // Constraint `index` (as passed to begin), once each, then finish().
   void set(std::uint32_t index, const ContactConstraint& constraint);
   void finish();
@@ -124,7 +125,6 @@ class ContactSolver {
   std::vector<std::uint32_t> color_begin_;  // colour positions, one past the last at the end
   std::vector<WideConstraint> wide_;
   std::vector<std::uint32_t> wide_begin_;  // into wide_, per colour
-  std::vector<std::uint64_t> color_bits_;
   std::vector<std::uint8_t> color_of_;
   std::vector<WideMaxImpulse> max_impulse_;
   // Wide mode with restitution: scalar copies of the bouncing constraints, in colour order.

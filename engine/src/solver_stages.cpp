@@ -69,7 +69,7 @@ void WorldState::prepare_contacts() {
     // moving bodies are read.
     constraint_bodies.push_back({ia < 0 ? still : ia, ib < 0 ? still : ib,
                                  ia < 0 || bodies[c.body_a].type != BodyType::dynamic,
-                                 ib < 0 || bodies[c.body_b].type != BodyType::dynamic});
+                                 ib < 0 || bodies[c.body_b].type != BodyType::dynamic, c.color});
   }
   // Constraints in order of their first moving body (a stable counting sort): neighbouring
   // constraints then touch neighbouring bodies and the solver's gathers stay in cache.
@@ -91,7 +91,7 @@ void WorldState::prepare_contacts() {
     constraint_contacts.swap(sorted_contacts);
     constraint_bodies.swap(sorted_bodies);
   }
-  contact_solver.begin(constraint_bodies, still, solver_bodies.size(), def.simd_solver);
+  contact_solver.begin(constraint_bodies, still, def.simd_solver);
 
   // Per-constraint body data comes from the compact solver arrays, not the body records.
   const auto info = [&](std::uint32_t body, std::int32_t index) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "body.hpp"
+#include "constraint_graph.hpp"
 #include "contact.hpp"
 #include "contact_solver.hpp"
 #include "id_pool.hpp"
@@ -34,6 +35,8 @@ struct WorldState {
   std::unordered_map<std::uint64_t, std::uint32_t> contact_index;
   std::vector<detail::SensorState> sensors;  // sorted by sensor shape slot
   std::size_t touching_count = 0;            // contacts whose touching flag is set
+  detail::ConstraintGraph graph;
+  std::vector<std::uint32_t> newly_acting;  // contacts waiting for a colour
 
   // Bodies that may be awake (every awake body is here; stale entries are dropped once a
   // step): a step visits these and their contacts only, so a sleeping island costs nothing.
@@ -97,6 +100,10 @@ struct WorldState {
   // contact.cpp
   void destroy_contact(std::uint32_t index);
   void set_touching(detail::Contact& contact, bool touching);
+  // Gives a contact its graph colour when it starts to have points (at the end of collide, in
+  // a fixed order) and takes it back when it has none.
+  void update_color(std::uint32_t contact_index);
+  void assign_new_colors();
   void destroy_shape_contacts(std::uint32_t shape_index);
   bool should_make_contact(std::uint32_t shape_a, std::uint32_t shape_b) const;
   void update_pairs();

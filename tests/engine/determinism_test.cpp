@@ -53,8 +53,10 @@ std::uint64_t run_busy_scene(bool simd_solver) {
 
 // Recorded from this test's own run. Any change to the solver, the narrowphase, the
 // broadphase pair order or the scenes changes it: re-record it then (the test prints the new
-// value), after checking the behaviour tests still pass.
-constexpr std::uint64_t kGoldenHash = 0x80d3d4cdb6cbc652ull;
+// value), after checking the behaviour tests still pass. Last re-recorded when graph colours
+// became persistent (kept from the step a contact starts acting): the same constraints, solved
+// in another colour order.
+constexpr std::uint64_t kGoldenHash = 0xcbacad9c41413059ull;
 
 TEST(Determinism, BusySceneIsBitwiseIdenticalRunAfterRun) {
   const std::uint64_t first = run_busy_scene(true);
