@@ -3,7 +3,8 @@
 // The GJK distance loop, written once for any pair of cores: PairFrame (two prepared hulls,
 // the engine's hot path) and CoreFrame (points, segments and hulls of the other shape kinds)
 // instantiate it, so the hull path keeps its inlined support scans and pays nothing for the
-// generality.
+// generality. The functions have internal linkage (static), as they had in one source file:
+// each caller's copy is then called once and inlined whole.
 
 #include <algorithm>
 #include <cmath>
@@ -21,8 +22,8 @@ struct Reduced {
   std::array<Real, 3> weight{};
 };
 
-inline void keep(Reduced& r, const LocalSimplex& s, std::initializer_list<int> which,
-                 std::initializer_list<Real> weights) {
+static inline void keep(Reduced& r, const LocalSimplex& s, std::initializer_list<int> which,
+                        std::initializer_list<Real> weights) {
   r.simplex.count = 0;
   Real sum = 0;
   for (Real w : weights) sum += w;
@@ -35,7 +36,7 @@ inline void keep(Reduced& r, const LocalSimplex& s, std::initializer_list<int> w
   }
 }
 
-inline Reduced reduce(const LocalSimplex& s) {
+static inline Reduced reduce(const LocalSimplex& s) {
   Reduced r;
   const Vec2& w1 = s.vertices[0].point;
   if (s.count == 1) {
@@ -97,23 +98,19 @@ inline Reduced reduce(const LocalSimplex& s) {
 
 // The weighted sum of what `at` gives for each vertex of the reduced simplex.
 template <typename At>
-Vec2 combine(const Reduced& r, At at) {
-  // Component by component (the same operations as a Vec2 sum) keeps GCC's uninitialized-use
-  // analysis from tripping over Eigen's constant constructor once this is inlined.
-  Real x = 0, y = 0;
+static Vec2 combine(const Reduced& r, At at) {
+  Vec2 sum(0, 0);
   for (int i = 0; i < r.simplex.count; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    const Vec2 v = at(r.simplex.vertices[k]);
-    x += r.weight[k] * v.x();
-    y += r.weight[k] * v.y();
+    sum += r.weight[k] * at(r.simplex.vertices[k]);
   }
-  return Vec2(x, y);
+  return sum;
 }
 
 // Start from the cached vertex pairs when they are still valid indices, else from the support
 // point along the centre-to-centre direction (eq. 2).
 template <typename Frame>
-LocalSimplex initial_simplex(const Frame& frame, const SimplexCache* cache) {
+static LocalSimplex initial_simplex(const Frame& frame, const SimplexCache* cache) {
   LocalSimplex s;
   if (cache != nullptr && cache->count > 0 && cache->count <= 3) {
     for (int i = 0; i < cache->count; ++i) {
@@ -152,15 +149,16 @@ struct LocalDistance {
 // GJK distance on A - B in A's frame by Voronoi-region simplex reduction. Always terminates:
 // stops on a repeated vertex, on no progress, or at an iteration cap.
 template <typename Frame>
-LocalDistance distance_loop(const Frame& frame, SimplexCache* cache) {
+static LocalDistance distance_loop(const Frame& frame, SimplexCache* cache) {
   LocalDistance result;
   LocalSimplex s = initial_simplex(frame, cache);
   // A cold start took one support point; cached vertices cost none.
   result.iterations = cache != nullptr && cache->count > 0 ? 0 : 1;
-  Reduced r = reduce(s);
+  Reduced r{};
   const int cap = static_cast<int>(2 * (frame.a_count() + frame.b_count())) + 16;
   bool overlap = false;
   for (;;) {
+    r = reduce(s);
     s = r.simplex;
     if (s.count == 3) {
       overlap = true;
@@ -202,7 +200,6 @@ LocalDistance distance_loop(const Frame& frame, SimplexCache* cache) {
     const Real simplex_extent = s.vertices[0].point.dot(d);
     if (w.point.dot(d) - simplex_extent <= 1e-15 * std::abs(simplex_extent)) break;
     s.vertices[static_cast<std::size_t>(s.count++)] = w;
-    r = reduce(s);
   }
 
   result.point_a = combine(r, [&](const LocalVertex& v) { return frame.a_vertex(v.index_a); });
