@@ -9,11 +9,11 @@
 #include "commands.hpp"
 #include "contact_compare.hpp"
 #include "exit_codes.hpp"
+#include "mink/engine/scene_file.hpp"
 #include "mink/error.hpp"
 #include "mink/render/gl_context.hpp"
 #include "mink/render/png_file.hpp"
 #include "mink/render/renderer.hpp"
-#include "scene_file.hpp"
 
 namespace mink::cli {
 

@@ -13,11 +13,11 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "mink/engine/scene_file.hpp"
 #include "mink/error.hpp"
 #include "mink/render/frame_sink.hpp"
 #include "mink/render/gl_context.hpp"
 #include "mink/render/renderer.hpp"
-#include "scene_file.hpp"
 #include "scene_view.hpp"
 
 namespace mink::cli {

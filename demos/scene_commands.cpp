@@ -5,7 +5,7 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
-#include "scene_file.hpp"
+#include "mink/engine/scene_file.hpp"
 
 namespace mink::cli {
 

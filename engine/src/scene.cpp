@@ -3,7 +3,9 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <string>
+#include <variant>
 
 #include "mink/error.hpp"
 #include "mink/geometry/point_sets.hpp"
@@ -14,42 +16,124 @@ World build_world(const SceneDef& scene) {
   World world(scene.world);
   for (const SceneBody& body : scene.bodies) {
     const BodyId id = world.create_body(body.body);
-    for (const ShapeDef& shape : body.shapes) world.create_shape(id, shape);
+    for (const ShapeDef& shape : body.shapes) {
+      if (shape.type == ShapeType::chain) {
+        world.create_chain(id, shape);
+      } else {
+        world.create_shape(id, shape);
+      }
+    }
     // Adding shapes wakes the body; respect a body defined asleep.
     if (!body.body.awake) world.set_awake(id, false);
   }
   return world;
 }
 
+namespace {
+
+// The fields every kind of shape keeps, as the world reports them. The event flags have no
+// World accessor, so they keep their ShapeDef defaults.
+ShapeDef captured_material(const World& world, ShapeId id) {
+  ShapeDef shape;
+  shape.type = world.shape_type(id);
+  shape.algorithm = world.shape_algorithm(id);
+  shape.density = world.shape_density(id);
+  shape.friction = world.shape_friction(id);
+  shape.restitution = world.shape_restitution(id);
+  shape.filter = world.shape_filter(id);
+  shape.is_sensor = world.is_sensor(id);
+  shape.user_data = world.shape_user_data(id);
+  return shape;
+}
+
+// True when `next` continues the chain whose last segment so far is `last`: a create_chain
+// call makes consecutive ids whose segments share their end points and see each other as
+// ghosts.
+bool continues_chain(ShapeId last_id, const ChainSegment& last, ShapeId next_id,
+                     const ChainSegment& next) {
+  return next_id.index == last_id.index + 1 && next.segment.point1 == last.segment.point2 &&
+         next.ghost1 == last.segment.point1 && last.ghost2 == next.segment.point2;
+}
+
+// Rebuilds the chains of one body from its segments: each maximal run of segments that
+// continue one another is one chain, closed when its last segment leads back to its first.
+void capture_chain(const World& world, std::span<const ShapeId> run,
+                   std::vector<ShapeDef>& shapes) {
+  const auto segment_of = [&](ShapeId id) {
+    return std::get<ChainSegment>(world.shape_geometry(id));
+  };
+  ShapeDef chain = captured_material(world, run.front());
+  const ChainSegment first = segment_of(run.front());
+  const ChainSegment last = segment_of(run.back());
+  chain.points.push_back(first.segment.point1);
+  for (const ShapeId id : run) chain.points.push_back(segment_of(id).segment.point2);
+  chain.loop = run.size() >= 3 && last.segment.point2 == first.segment.point1 &&
+               first.ghost1 == last.segment.point1 && last.ghost2 == first.segment.point2;
+  if (chain.loop) chain.points.pop_back();  // the loop closes itself
+  shapes.push_back(std::move(chain));
+}
+
+std::vector<ShapeDef> captured_shapes(const World& world, BodyId body) {
+  std::vector<ShapeDef> shapes;
+  const std::vector<ShapeId> ids = world.body_shapes(body);
+  for (std::size_t i = 0; i < ids.size();) {
+    const ShapeGeometry& geometry = world.shape_geometry(ids[i]);
+    if (kind_of(geometry) == ShapeKind::chain_segment) {
+      std::size_t end = i + 1;
+      while (
+          end < ids.size() && kind_of(world.shape_geometry(ids[end])) == ShapeKind::chain_segment &&
+          continues_chain(ids[end - 1], std::get<ChainSegment>(world.shape_geometry(ids[end - 1])),
+                          ids[end], std::get<ChainSegment>(world.shape_geometry(ids[end])))) {
+        ++end;
+      }
+      capture_chain(world, std::span(ids).subspan(i, end - i), shapes);
+      i = end;
+      continue;
+    }
+    ShapeDef shape = captured_material(world, ids[i]);
+    shape.radius = world.shape_radius(ids[i]);
+    if (const auto* circle = std::get_if<Circle>(&geometry)) {
+      shape.points = {circle->center};
+    } else if (const auto* capsule = std::get_if<Capsule>(&geometry)) {
+      shape.points = {capsule->center1, capsule->center2};
+    } else if (const auto* segment = std::get_if<Segment>(&geometry)) {
+      shape.points = {segment->point1, segment->point2};
+    } else {
+      const auto vertices = world.shape_hull(ids[i]).vertices();
+      shape.points.assign(vertices.begin(), vertices.end());
+    }
+    shapes.push_back(std::move(shape));
+    ++i;
+  }
+  return shapes;
+}
+
+}  // namespace
+
 SceneDef capture_scene(const World& world) {
   SceneDef scene;
   scene.world = world.def();
   for (const BodyId id : world.bodies()) {
     SceneBody body;
-    body.body.type = world.body_type(id);
-    body.body.position = world.position(id);
-    body.body.angle = world.angle(id);
+    BodyDef& def = body.body;
+    def.type = world.body_type(id);
+    def.position = world.position(id);
+    def.angle = world.angle(id);
     // BodyDef velocities are of the origin; the world keeps the centre's.
     const Real w = world.angular_velocity(id);
     const Vec2 r = world.world_center(id) - world.position(id);
-    body.body.linear_velocity = world.linear_velocity(id) - w * Vec2(-r.y(), r.x());
-    body.body.angular_velocity = w;
-    body.body.linear_damping = world.linear_damping(id);
-    body.body.angular_damping = world.angular_damping(id);
-    body.body.gravity_scale = world.gravity_scale(id);
-    body.body.allow_sleep = world.allow_sleep(id);
-    body.body.awake = world.is_awake(id) || body.body.type != BodyType::dynamic;
-    body.body.user_data = world.user_data(id);
-    for (const ShapeId shape_id : world.body_shapes(id)) {
-      ShapeDef shape;
-      const auto vertices = world.shape_hull(shape_id).vertices();
-      shape.points.assign(vertices.begin(), vertices.end());
-      shape.algorithm = world.shape_algorithm(shape_id);
-      shape.density = world.shape_density(shape_id);
-      shape.friction = world.shape_friction(shape_id);
-      shape.restitution = world.shape_restitution(shape_id);
-      body.shapes.push_back(std::move(shape));
-    }
+    def.linear_velocity = world.linear_velocity(id) - w * Vec2(-r.y(), r.x());
+    def.angular_velocity = w;
+    def.linear_damping = world.linear_damping(id);
+    def.angular_damping = world.angular_damping(id);
+    def.gravity_scale = world.gravity_scale(id);
+    def.allow_sleep = world.allow_sleep(id);
+    def.awake = world.is_awake(id) || def.type != BodyType::dynamic;
+    def.enabled = world.is_enabled(id);
+    def.fixed_rotation = world.fixed_rotation(id);
+    def.bullet = world.is_bullet(id);
+    def.user_data = world.user_data(id);
+    body.shapes = captured_shapes(world, id);
     scene.bodies.push_back(std::move(body));
   }
   return scene;
@@ -127,7 +211,7 @@ SceneDef many_pyramids_scene(int rows, int columns, int base_count) {
   return scene;
 }
 
-SceneDef rain_scene(int body_count, std::uint64_t seed) {
+SceneDef rain_scene(int body_count, std::uint64_t seed, RainShapes kinds) {
   if (body_count < 0) throw InvalidArgumentError("rain_scene: body_count must be >= 0");
   SceneDef scene;
   const Real half_width = 12;
@@ -138,15 +222,25 @@ SceneDef rain_scene(int body_count, std::uint64_t seed) {
   const int per_row = 12;
   const Real cell = 2 * half_width / per_row;
   for (int i = 0; i < body_count; ++i) {
-    const int vertex_count = 3 + static_cast<int>(random.next() % 62);  // 3..64
-    const Real radius = 0.4 + 0.4 * random.uniform();
-    // Vertices on a circle at jittered, evenly spread angles: every one is a hull vertex and
-    // no sliver hulls.
+    // Polygons-only draws exactly what it always drew, so its scenes stay the same.
+    const std::uint64_t kind = kinds == RainShapes::mixed ? random.next() % 4 : 0;
     ShapeDef shape;
-    const Real slot = 2 * std::numbers::pi / vertex_count;
-    for (int k = 0; k < vertex_count; ++k) {
-      const Real a = (k + 0.8 * random.uniform()) * slot;
-      shape.points.emplace_back(radius * std::cos(a), radius * std::sin(a));
+    if (kind == 2) {
+      shape = ShapeDef::circle(0.3 + 0.3 * random.uniform());
+    } else if (kind == 3) {
+      const Real half_length = 0.2 + 0.3 * random.uniform();
+      shape = ShapeDef::capsule(Vec2(-half_length, 0), Vec2(half_length, 0),
+                                0.15 + 0.15 * random.uniform());
+    } else {
+      const int vertex_count = 3 + static_cast<int>(random.next() % 62);  // 3..64
+      const Real radius = 0.4 + 0.4 * random.uniform();
+      // Vertices on a circle at jittered, evenly spread angles: every one is a hull vertex and
+      // no sliver hulls.
+      const Real slot = 2 * std::numbers::pi / vertex_count;
+      for (int k = 0; k < vertex_count; ++k) {
+        const Real a = (k + 0.8 * random.uniform()) * slot;
+        shape.points.emplace_back(radius * std::cos(a), radius * std::sin(a));
+      }
     }
     shape.friction = 0.4 + 0.4 * random.uniform();
     SceneBody body;
@@ -213,8 +307,64 @@ SceneDef paper_scene() {
   return scene;
 }
 
-constexpr std::array<std::string_view, 6> kSceneNames = {
-    "large_pyramid", "pyramid", "many_pyramids", "rain", "tumbler", "paper"};
+SceneBody dynamic_body(const Vec2& position, ShapeDef shape) {
+  SceneBody body;
+  body.body.type = BodyType::dynamic;
+  body.body.position = position;
+  body.shapes.push_back(std::move(shape));
+  return body;
+}
+
+// Every shape kind in one small scene: a chain terrain between two walls, a rounded box, a
+// circle, a capsule, a hexagon, a static segment shelf, a sensor band, and two filter teams
+// dropped onto the same spot, which fall through each other but not through the ground.
+SceneDef shapes_scene() {
+  SceneDef scene;
+  SceneBody ground;
+  std::vector<Vec2> terrain;
+  // A valley between two walls. A chain collides on the right of each segment: walking right
+  // to left keeps its solid side down and its face up.
+  terrain.emplace_back(15, 10);
+  for (int i = 0; i <= 30; ++i) {
+    const Real x = 15 - i;
+    terrain.emplace_back(x, 0.5 * std::sin(0.4 * x) + 0.02 * x * x);
+  }
+  terrain.emplace_back(-15, 10);
+  ground.shapes.push_back(ShapeDef::chain(std::move(terrain)));
+  ground.shapes.push_back(ShapeDef::segment(Vec2(6, 6), Vec2(10, 5)));
+  ShapeDef band = ShapeDef::box(15, 0.5, Vec2(0, 4));
+  band.is_sensor = true;
+  ground.shapes.push_back(std::move(band));
+  scene.bodies.push_back(std::move(ground));
+
+  ShapeDef rounded = ShapeDef::box(0.6, 0.4);
+  rounded.radius = 0.15;
+  scene.bodies.push_back(dynamic_body(Vec2(-9, 8), std::move(rounded)));
+  scene.bodies.push_back(dynamic_body(Vec2(-6, 9), ShapeDef::circle(0.5)));
+  scene.bodies.push_back(
+      dynamic_body(Vec2(11, 9), ShapeDef::capsule(Vec2(-0.5, 0), Vec2(0.5, 0), 0.3)));
+  scene.bodies.push_back(dynamic_body(Vec2(8, 8), ShapeDef::regular_polygon(6, 0.5)));
+
+  // Team bits: each team's mask leaves out the other team, so they pass through each other.
+  // Both drop into the bottom of the valley.
+  constexpr std::uint64_t kRed = 0x2, kBlue = 0x4;
+  for (int i = 0; i < 4; ++i) {
+    ShapeDef red = ShapeDef::box(0.4, 0.4);
+    red.filter.category = kRed;
+    red.filter.mask = ~kBlue;
+    red.user_data = 1;
+    scene.bodies.push_back(dynamic_body(Vec2(-2.5, 7 + 1.2 * i), std::move(red)));
+    ShapeDef blue = ShapeDef::circle(0.4);
+    blue.filter.category = kBlue;
+    blue.filter.mask = ~kRed;
+    blue.user_data = 2;
+    scene.bodies.push_back(dynamic_body(Vec2(-2.3, 7.5 + 1.2 * i), std::move(blue)));
+  }
+  return scene;
+}
+
+constexpr std::array<std::string_view, 7> kSceneNames = {
+    "large_pyramid", "pyramid", "many_pyramids", "rain", "tumbler", "paper", "shapes"};
 
 }  // namespace
 
@@ -226,9 +376,10 @@ SceneDef builtin_scene(std::string_view name) {
   if (name == "large_pyramid") return pyramid_scene(100);
   if (name == "pyramid") return pyramid_scene(20);
   if (name == "many_pyramids") return many_pyramids_scene(20, 20, 10);
-  if (name == "rain") return rain_scene(300, 5);
+  if (name == "rain") return rain_scene(300, 5, RainShapes::mixed);
   if (name == "tumbler") return tumbler_scene();
   if (name == "paper") return paper_scene();
+  if (name == "shapes") return shapes_scene();
   throw InvalidArgumentError("unknown scene '" + std::string(name) + "'");
 }
 

@@ -1,17 +1,17 @@
-// Drops a few convex hulls (each made from a cloud of points) onto a static ground box, runs
-// four seconds of simulation and prints where each body came to rest.
+// Drops a few convex hulls (each made from a cloud of points) onto a static ground box read from
+// scene-file text, runs four seconds of simulation and prints where each body came to rest.
 #include <cstdio>
 #include <vector>
 
+#include "mink/engine/scene_file.hpp"
 #include "mink/engine/world.hpp"
 
 int main() {
-  mink::World world(mink::WorldDef{});  // gravity (0, -10), 60 Hz steps
-
-  mink::BodyDef ground_def;  // static by default
-  ground_def.position = {0, -1};
-  const mink::BodyId ground = world.create_body(ground_def);
-  world.create_shape(ground, mink::ShapeDef::box(20, 1));  // top face at y = 0
+  // The ground comes from a scene file's text (docs/scene-format.md), the rest from the API.
+  // Default world settings: gravity (0, -10), 60 Hz steps. Top face of the ground at y = 0.
+  mink::World world = mink::build_world(mink::parse_scene_json(R"({"bodies": [
+      {"type": "static", "position": [0, -1], "shapes": [{"box": {"half_extents": [20, 1]}}]}
+  ]})"));
 
   std::vector<mink::BodyId> bodies;
   std::vector<double> start_heights;

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "cli_test_support.hpp"
+#include "mink/engine/scene_file.hpp"
 #include "mink/engine/world.hpp"
-#include "scene_file.hpp"
 
 namespace {
 
@@ -76,7 +76,7 @@ TEST(RunCommand, SaveThenResumeFollowsTheUninterruptedRun) {
   // The saved file is the world as it stood: same state as 60 steps in-process.
   World direct = build_world(builtin_scene("pyramid"));
   for (int i = 0; i < 60; ++i) direct.step();
-  const SceneDef at_half = cli::load_scene_file(saved);
+  const SceneDef at_half = load_scene_file(saved);
   const SceneDef expected = capture_scene(direct);
   const auto ids = direct.bodies();
   ASSERT_EQ(at_half.bodies.size(), expected.bodies.size());
@@ -92,7 +92,7 @@ TEST(RunCommand, SaveThenResumeFollowsTheUninterruptedRun) {
   const auto end = (dir / "end.json").string();
   ASSERT_EQ(run_cli({"run", saved, "--steps", "30", "--no-render", "--save", end}).code, 0);
   for (int i = 0; i < 30; ++i) direct.step();
-  const SceneDef resumed = cli::load_scene_file(end);
+  const SceneDef resumed = load_scene_file(end);
   double worst = 0;
   for (std::size_t i = 0; i < ids.size(); ++i) {
     worst = std::max(worst, (resumed.bodies[i].body.position - direct.position(ids[i])).norm());

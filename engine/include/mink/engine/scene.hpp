@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -31,11 +32,12 @@ struct SceneDef {
 World build_world(const SceneDef& scene);
 
 /// @brief The current state of a world as a scene: every live body (slot order) with its pose,
-/// velocities and settings, each shape as its hull's vertices. build_world(capture_scene(w))
-/// recreates the bodies where they are now (contact impulses are not kept).
+/// velocities and settings, each shape in its own kind (a polygon as its hull's vertices, a
+/// chain as one chain shape). build_world(capture_scene(w)) recreates the bodies where they
+/// are now (contact impulses are not kept).
 SceneDef capture_scene(const World& world);
 
-/// @brief Built-in scenes: large_pyramid, pyramid, many_pyramids, rain, tumbler, paper.
+/// @brief Built-in scenes: large_pyramid, pyramid, many_pyramids, rain, tumbler, paper, shapes.
 std::span<const std::string_view> builtin_scene_names() noexcept;
 /// @brief The built-in scene of that name (see builtin_scene_names).
 /// @throws InvalidArgumentError naming an unknown scene.
@@ -52,9 +54,15 @@ SceneDef pyramid_scene(int base_count);
 /// @brief A grid of rows x columns pyramids, each row on its own thin static floor.
 /// @throws InvalidArgumentError unless all three counts are positive.
 SceneDef many_pyramids_scene(int rows, int columns, int base_count);
-/// @brief `body_count` random convex bodies falling into a walled box; the same `seed` gives
-/// the same scene.
+/// @brief Which shapes rain_scene drops.
+enum class RainShapes : std::uint8_t {
+  polygons,  ///< random convex polygons of 3..64 vertices only
+  mixed,     ///< polygons, circles and capsules (the `rain` built-in)
+};
+
+/// @brief `body_count` random convex bodies falling into a walled box; the same `seed` and
+/// `shapes` give the same scene.
 /// @throws InvalidArgumentError when body_count < 0.
-SceneDef rain_scene(int body_count, std::uint64_t seed);
+SceneDef rain_scene(int body_count, std::uint64_t seed, RainShapes shapes = RainShapes::polygons);
 
 }  // namespace mink

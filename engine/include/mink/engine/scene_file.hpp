@@ -1,0 +1,48 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "mink/engine/scene.hpp"
+#include "mink/error.hpp"
+
+namespace mink {
+
+/// A scene file that cannot be used. The message starts with the JSON path of the offending
+/// value (e.g. "bodies[3].shapes[0].points[2]") and says what is wrong. An
+/// InvalidArgumentError, so the `mink` command exits with code 2 (bad input).
+class SceneFileError : public InvalidArgumentError {
+ public:
+  /// @brief "json_path: problem".
+  SceneFileError(const std::string& json_path, const std::string& problem)
+      : InvalidArgumentError(json_path + ": " + problem), json_path_(json_path) {}
+  /// @brief Where the problem is, e.g. "bodies[3].shapes[0].points[2]".
+  const std::string& json_path() const noexcept { return json_path_; }
+
+ private:
+  std::string json_path_;
+};
+
+/// @brief Reads the scene format of docs/scene-format.md. Everything a run needs is checked
+/// before it returns (each field's type and range, every shape, the world settings), so a bad
+/// file never starts a run.
+/// @param source names the text in the message of a file that is not JSON at all
+/// @throws SceneFileError for the first problem found
+SceneDef parse_scene_json(std::string_view text, const std::string& source = "scene");
+/// @brief parse_scene_json on a file's contents; messages end with " (in PATH)".
+/// @throws InvalidArgumentError for an unreadable file, SceneFileError for a bad one
+SceneDef load_scene_file(const std::filesystem::path& path);
+
+/// @brief Every field of every object, each shape in its own kind's form, doubles in shortest
+/// round-trip form: parse_scene_json(scene_to_json(s)) gives back exactly `s`.
+std::string scene_to_json(const SceneDef& scene);
+/// @brief Writes scene_to_json(scene), creating the parent directories.
+/// @throws InvalidArgumentError when the file cannot be written
+void save_scene_file(const std::filesystem::path& path, const SceneDef& scene);
+
+/// @brief A built-in's name (builtin_scene_names), or else a path to a scene file.
+/// @throws InvalidArgumentError naming the built-ins when it is neither
+SceneDef resolve_scene(const std::string& name_or_path);
+
+}  // namespace mink

@@ -1,0 +1,549 @@
+#include "mink/engine/scene_file.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "mink/engine/scene_fields.hpp"
+#include "mink/engine/world.hpp"
+
+namespace mink {
+
+namespace {
+
+using Json = nlohmann::json;
+
+constexpr const char* kFormat = "minkowski-scene";
+constexpr int kVersion = 1;
+
+std::string type_name(const Json& value) {
+  if (value.is_null()) return "null";
+  if (value.is_boolean()) return "a boolean";
+  if (value.is_number()) return "a number";
+  if (value.is_string()) return "a string";
+  if (value.is_array()) return "an array";
+  return "an object";
+}
+
+std::string index_path(const std::string& path, std::size_t index) {
+  return path + "[" + std::to_string(index) + "]";
+}
+
+// An object being read: remembers which keys were asked for, so that finish() can report any
+// other key (a typo must never be silently ignored).
+class ObjectReader {
+ public:
+  ObjectReader(const Json& value, std::string path) : value_(value), path_(std::move(path)) {
+    if (!value_.is_object()) {
+      throw SceneFileError(path_, "expected an object, got " + type_name(value_));
+    }
+  }
+
+  std::string child(std::string_view key) const {
+    return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+  }
+  const std::string& path() const { return path_; }
+  bool has(std::string_view key) const { return value_.contains(key); }
+
+  const Json* find(std::string_view key) {
+    const auto it = value_.find(key);
+    if (it == value_.end()) return nullptr;
+    used_.emplace(key);
+    return &*it;
+  }
+  const Json& require(std::string_view key) {
+    const Json* value = find(key);
+    if (value == nullptr) throw SceneFileError(child(key), "missing field");
+    return *value;
+  }
+
+  void finish() const {
+    for (const auto& [key, value] : value_.items()) {
+      if (used_.count(key) == 0) throw SceneFileError(child(key), "unknown key");
+    }
+  }
+
+ private:
+  const Json& value_;
+  std::string path_;
+  std::set<std::string, std::less<>> used_;
+};
+
+const Json& require_array(const Json& v, const std::string& path) {
+  if (!v.is_array()) throw SceneFileError(path, "expected an array, got " + type_name(v));
+  return v;
+}
+
+// "must be > 0, got -1", "must be in 1..1000, got 0".
+void check_range(const FieldRange& range, Real value, const Json& v, const std::string& path) {
+  if (range.contains(value)) return;
+  const bool interval =
+      std::isfinite(range.min) && std::isfinite(range.max) && !range.min_exclusive;
+  throw SceneFileError(path, std::string("must be ") + (interval ? "in " : "") + range.describe() +
+                                 ", got " + v.dump());
+}
+
+Real read_number(const Json& v, const std::string& path, const FieldRange& range) {
+  if (!v.is_number()) throw SceneFileError(path, "expected a number, got " + type_name(v));
+  const Real x = v.get<Real>();
+  if (!std::isfinite(x)) throw SceneFileError(path, "not a finite number (NaN or infinite)");
+  check_range(range, x, v, path);
+  return x;
+}
+
+Vec2 read_vec2(const Json& v, const std::string& path, const FieldRange& range) {
+  if (!v.is_array() || v.size() != 2) {
+    throw SceneFileError(
+        path, "expected [x, y], got " +
+                  (v.is_array() ? "an array of " + std::to_string(v.size()) : type_name(v)));
+  }
+  return {read_number(v[0], index_path(path, 0), range),
+          read_number(v[1], index_path(path, 1), range)};
+}
+
+std::int64_t read_integer(const Json& v, const std::string& path, const FieldRange& range) {
+  if (!v.is_number_integer()) {
+    throw SceneFileError(path, "expected an integer, got " + type_name(v));
+  }
+  // Integers past int64 only come unsigned; every range here is far inside int64.
+  const bool huge =
+      v.is_number_unsigned() &&
+      v.get<std::uint64_t>() > std::uint64_t(std::numeric_limits<std::int64_t>::max());
+  const std::int64_t n = huge ? std::numeric_limits<std::int64_t>::max() : v.get<std::int64_t>();
+  check_range(range, huge ? std::numeric_limits<Real>::infinity() : static_cast<Real>(n), v, path);
+  return n;
+}
+
+std::uint64_t read_user_data(const Json& v, const std::string& path) {
+  if (v.is_number_unsigned()) return v.get<std::uint64_t>();
+  throw SceneFileError(path, "expected an integer in 0..18446744073709551615, got " +
+                                 (v.is_number() ? v.dump() : type_name(v)));
+}
+
+// Bit sets read best in hex, so "0xFFFF" is accepted as well as a plain integer.
+std::uint64_t read_bits(const Json& v, const std::string& path) {
+  if (v.is_number_unsigned()) return v.get<std::uint64_t>();
+  if (v.is_string()) {
+    const std::string& s = v.get_ref<const std::string&>();
+    const char* digits = s.data() + 2;
+    const char* end = s.data() + s.size();
+    std::uint64_t bits = 0;
+    if (s.size() > 2 && s.size() <= 18 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X') &&
+        std::isxdigit(static_cast<unsigned char>(*digits))) {
+      const auto [ptr, error] = std::from_chars(digits, end, bits, 16);
+      if (error == std::errc() && ptr == end) return bits;
+    }
+    throw SceneFileError(
+        path, "expected a hex string of 1 to 16 digits like \"0xFFFF\", got " + v.dump());
+  }
+  throw SceneFileError(path,
+                       "expected an integer in 0..18446744073709551615 or a hex string like "
+                       "\"0xFFFF\", got " +
+                           (v.is_number() ? v.dump() : type_name(v)));
+}
+
+std::string read_name(const Json& v, const std::string& path,
+                      std::span<const std::string_view> names) {
+  if (v.is_string()) {
+    const std::string& s = v.get_ref<const std::string&>();
+    if (std::find(names.begin(), names.end(), s) != names.end()) return s;
+  }
+  std::string list;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) list.append(i + 1 == names.size() ? " or " : ", ");
+    list.append(1, '"').append(names[i]).append(1, '"');
+  }
+  throw SceneFileError(path, "expected " + list + ", got " + v.dump());
+}
+
+template <class Object>
+FieldValue read_value(const Json& v, const std::string& path, const SceneField<Object>& field) {
+  switch (field.kind) {
+    case FieldKind::real:
+      return read_number(v, path, field.range);
+    case FieldKind::integer:
+      return read_integer(v, path, field.range);
+    case FieldKind::boolean:
+      if (!v.is_boolean())
+        throw SceneFileError(path, "expected true or false, got " + type_name(v));
+      return v.get<bool>();
+    case FieldKind::vec2:
+      return read_vec2(v, path, field.range);
+    case FieldKind::points: {
+      std::vector<Vec2> points;
+      for (std::size_t i = 0; i < require_array(v, path).size(); ++i) {
+        points.push_back(read_vec2(v[i], index_path(path, i), field.range));
+      }
+      return points;
+    }
+    case FieldKind::bits:
+      return read_bits(v, path);
+    case FieldKind::user_data:
+      return read_user_data(v, path);
+    case FieldKind::name:
+      return read_name(v, path, field.names());
+  }
+  throw SceneFileError(path, "field of unknown kind");
+}
+
+// Reads every key of `fields` that is present into `object`; the caller finishes the reader.
+template <class Object>
+void read_fields(ObjectReader& reader, std::span<const SceneField<Object>> fields, Object& object) {
+  for (const SceneField<Object>& field : fields) {
+    const Json* value = reader.find(field.key);
+    const std::string path = reader.child(field.key);
+    if (value == nullptr) {
+      if (field.required) throw SceneFileError(path, "missing field");
+      continue;
+    }
+    if (field.applies != nullptr && !field.applies(object)) {
+      throw SceneFileError(path, "only allowed on " + std::string(field.applies_to));
+    }
+    field.set(object, read_value(*value, path, field));
+  }
+}
+
+// A nested object read entirely from one table.
+template <class Object>
+void read_object(const Json& value, const std::string& path,
+                 std::span<const SceneField<Object>> fields, Object& object) {
+  ObjectReader reader(value, path);
+  read_fields(reader, fields, object);
+  reader.finish();
+}
+
+Json vec_json(const Vec2& v) {
+  return Json::array({v.x(), v.y()});
+}
+
+Json write_value(const FieldValue& value, FieldKind kind) {
+  switch (kind) {
+    case FieldKind::real:
+      return std::get<Real>(value);
+    case FieldKind::integer:
+      return std::get<std::int64_t>(value);
+    case FieldKind::boolean:
+      return std::get<bool>(value);
+    case FieldKind::vec2:
+      return vec_json(std::get<Vec2>(value));
+    case FieldKind::points: {
+      Json points = Json::array();
+      for (const Vec2& p : std::get<std::vector<Vec2>>(value)) points.push_back(vec_json(p));
+      return points;
+    }
+    case FieldKind::bits: {
+      std::array<char, 16> digits{};
+      const char* end = std::to_chars(digits.data(), digits.data() + digits.size(),
+                                      std::get<std::uint64_t>(value), 16)
+                            .ptr;
+      std::string hex = "0x";
+      for (const char* c = digits.data(); c != end; ++c) {
+        hex.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(*c))));
+      }
+      return hex;
+    }
+    case FieldKind::user_data:
+      return std::get<std::uint64_t>(value);
+    case FieldKind::name:
+      return std::get<std::string>(value);
+  }
+  return nullptr;
+}
+
+template <class Object>
+Json write_fields(std::span<const SceneField<Object>> fields, const Object& object) {
+  Json out = Json::object();
+  for (const SceneField<Object>& field : fields) {
+    if (field.applies != nullptr && !field.applies(object)) continue;
+    out[std::string(field.key)] = write_value(field.get(object), field.kind);
+  }
+  return out;
+}
+
+WorldDef read_world(const Json& value, const std::string& path) {
+  WorldDef world;
+  read_object(value, path, world_fields(), world);
+  try {
+    World check(world);  // settings valid one by one may still clash
+  } catch (const Error& error) {
+    throw SceneFileError(path, error.what());
+  }
+  return world;
+}
+
+// The keys that say what a shape's geometry is; exactly one per shape.
+std::vector<std::string_view> geometry_keys() {
+  std::vector<std::string_view> keys = {"points", "box", "polygon"};
+  for (const SceneShapeForm& form : shape_forms()) keys.push_back(form.key);
+  return keys;
+}
+
+// The core points a geometry form's fields fill in, so an optional centre defaults to the
+// origin rather than to nothing.
+std::size_t core_point_count(ShapeType type) {
+  switch (type) {
+    case ShapeType::circle:
+      return 1;
+    case ShapeType::capsule:
+    case ShapeType::segment:
+      return 2;
+    default:
+      return 0;
+  }
+}
+
+// Reads the one geometry key; returns the path to blame for a shape the engine refuses.
+std::string read_geometry(ObjectReader& reader, ShapeDef& shape) {
+  std::vector<std::string_view> present;
+  const std::vector<std::string_view> keys = geometry_keys();
+  for (const std::string_view key : keys) {
+    if (reader.has(key)) present.push_back(key);
+  }
+  if (present.size() != 1) {
+    std::string list;
+    for (const std::string_view key : keys) list += (list.empty() ? "" : ", ") + std::string(key);
+    throw SceneFileError(reader.path(), present.empty() ? "missing field: one of " + list
+                                                        : "give only one of " + list);
+  }
+  const std::string_view key = present.front();
+  const std::string path = reader.child(key);
+  if (key == "points") return path;  // a shape field: read with the others
+  if (key == "box") {
+    SceneBox box;
+    read_object(*reader.find(key), path, box_fields(), box);
+    shape = ShapeDef::box(box.half_extents.x(), box.half_extents.y(), box.center, box.angle);
+  } else if (key == "polygon") {
+    SceneRegularPolygon polygon;
+    read_object(*reader.find(key), path, regular_polygon_fields(), polygon);
+    shape =
+        ShapeDef::regular_polygon(static_cast<int>(polygon.count), polygon.radius, polygon.center);
+  } else {
+    const auto forms = shape_forms();
+    const auto form = std::find_if(forms.begin(), forms.end(),
+                                   [&](const SceneShapeForm& f) { return f.key == key; });
+    shape.type = form->type;
+    shape.points.assign(core_point_count(form->type), Vec2(0, 0));
+    read_object(*reader.find(key), path, form->fields, shape);
+  }
+  return path;
+}
+
+ShapeDef read_shape(const Json& value, const std::string& path) {
+  ObjectReader reader(value, path);
+  ShapeDef shape;
+  const std::string geometry_path = read_geometry(reader, shape);
+  read_fields(reader, shape_fields(), shape);
+  if (const Json* filter = reader.find("filter")) {
+    read_object(*filter, reader.child("filter"), filter_fields(), shape.filter);
+  }
+  if (const Json* scale = reader.find("scale")) {
+    if (shape.type != ShapeType::polygon) {
+      throw SceneFileError(reader.child("scale"), "only allowed on polygon shapes");
+    }
+    ShapeScale s;
+    read_object(*scale, reader.child("scale"), scale_fields(), s);
+    shape.scale = s;
+  }
+  reader.finish();
+  // Hull and check now, so a shape the engine would refuse is reported before anything runs.
+  try {
+    if (shape.type == ShapeType::polygon) (void)make_shape_hull(shape);
+    check_shape_def(shape);
+  } catch (const NonFiniteInputError& error) {
+    throw SceneFileError(index_path(geometry_path, error.index()),
+                         "not a finite number once scaled");
+  } catch (const DegenerateInputError& error) {
+    throw SceneFileError(geometry_path, std::string("degenerate hull: ") + error.what());
+  } catch (const Error& error) {
+    throw SceneFileError(geometry_path, error.what());
+  }
+  return shape;
+}
+
+SceneBody read_body(const Json& value, const std::string& path) {
+  ObjectReader reader(value, path);
+  SceneBody body;
+  read_fields(reader, body_fields(), body.body);
+  const std::string shapes_path = reader.child("shapes");
+  const Json& shapes = require_array(reader.require("shapes"), shapes_path);
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    body.shapes.push_back(read_shape(shapes[i], index_path(shapes_path, i)));
+  }
+  reader.finish();
+  return body;
+}
+
+Json shape_json(const ShapeDef& shape) {
+  Json out = write_fields(shape_fields(), shape);
+  for (const SceneShapeForm& form : shape_forms()) {
+    if (form.type == shape.type) out[std::string(form.key)] = write_fields(form.fields, shape);
+  }
+  out["filter"] = write_fields(filter_fields(), shape.filter);
+  if (shape.scale && shape.type == ShapeType::polygon) {
+    out["scale"] = write_fields(scale_fields(), *shape.scale);
+  }
+  return out;
+}
+
+// Re-reads text the DOM parser refused for a number too large for a double, to name where
+// that number is: the SAX events carry the path of the value being read.
+class PathTracker : public nlohmann::json_sax<Json> {
+ public:
+  std::string error_path;
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override {
+    frames_.push_back({false, 0, ""});
+    return true;
+  }
+  bool key(string_t& key) override {
+    frames_.back().key = key;
+    return true;
+  }
+  bool end_object() override { return end(); }
+  bool start_array(std::size_t) override {
+    frames_.push_back({true, 0, ""});
+    return true;
+  }
+  bool end_array() override { return end(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+    error_path = path();
+    return false;
+  }
+
+ private:
+  struct Frame {
+    bool array;
+    std::size_t index;
+    std::string key;
+  };
+  std::string path() const {
+    std::string p;
+    for (const Frame& f : frames_) {
+      if (f.array) {
+        p = index_path(p, f.index);
+      } else {
+        p += (p.empty() ? "" : ".") + f.key;
+      }
+    }
+    return p;
+  }
+  bool value() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+    return true;
+  }
+  bool end() {
+    frames_.pop_back();
+    return value();
+  }
+  std::vector<Frame> frames_;
+};
+
+Json parse_json(std::string_view text, const std::string& source) {
+  try {
+    return Json::parse(text);
+  } catch (const Json::parse_error& error) {
+    throw SceneFileError(source, std::string("not valid JSON: ") + error.what());
+  } catch (const Json::out_of_range&) {
+    // JSON has no NaN or infinity; a literal like 1e999 is the only way to write one.
+    PathTracker tracker;
+    Json::sax_parse(text, &tracker);
+    throw SceneFileError(tracker.error_path.empty() ? source : tracker.error_path,
+                         "not a finite number (NaN or infinite)");
+  } catch (const Json::exception& error) {
+    throw SceneFileError(source, std::string("not valid JSON: ") + error.what());
+  }
+}
+
+}  // namespace
+
+SceneDef parse_scene_json(std::string_view text, const std::string& source) {
+  const Json root = parse_json(text, source);
+  ObjectReader reader(root, "");
+  if (const Json* format = reader.find("format")) {
+    if (!format->is_string() || format->get<std::string>() != kFormat) {
+      throw SceneFileError("format",
+                           std::string("expected \"") + kFormat + "\", got " + format->dump());
+    }
+  }
+  if (const Json* version = reader.find("version")) {
+    if (!version->is_number_integer() || version->get<long long>() != kVersion) {
+      throw SceneFileError("version", "only version " + std::to_string(kVersion) +
+                                          " is known, got " + version->dump());
+    }
+  }
+  SceneDef scene;
+  if (const Json* world = reader.find("world")) scene.world = read_world(*world, "world");
+  const Json& bodies = require_array(reader.require("bodies"), "bodies");
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    scene.bodies.push_back(read_body(bodies[i], index_path("bodies", i)));
+  }
+  reader.finish();
+  return scene;
+}
+
+SceneDef load_scene_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidArgumentError("cannot read scene file '" + path.string() + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    return parse_scene_json(text.str(), path.string());
+  } catch (const SceneFileError& error) {
+    const std::string problem = std::string(error.what()).substr(error.json_path().size() + 2);
+    throw SceneFileError(error.json_path(), problem + " (in " + path.string() + ")");
+  }
+}
+
+std::string scene_to_json(const SceneDef& scene) {
+  Json bodies = Json::array();
+  for (const SceneBody& body : scene.bodies) {
+    Json shapes = Json::array();
+    for (const ShapeDef& shape : body.shapes) shapes.push_back(shape_json(shape));
+    Json b = write_fields(body_fields(), body.body);
+    b["shapes"] = std::move(shapes);
+    bodies.push_back(std::move(b));
+  }
+  const Json root = {{"format", kFormat},
+                     {"version", kVersion},
+                     {"world", write_fields(world_fields(), scene.world)},
+                     {"bodies", std::move(bodies)}};
+  return root.dump(1) + "\n";
+}
+
+void save_scene_file(const std::filesystem::path& path, const SceneDef& scene) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  std::ofstream out(path, std::ios::binary);
+  out << scene_to_json(scene);
+  out.close();
+  if (!out) throw InvalidArgumentError("cannot write scene file '" + path.string() + "'");
+}
+
+SceneDef resolve_scene(const std::string& name_or_path) {
+  const auto names = builtin_scene_names();
+  if (std::find(names.begin(), names.end(), name_or_path) != names.end()) {
+    return builtin_scene(name_or_path);
+  }
+  if (!std::filesystem::exists(name_or_path)) {
+    std::string list;
+    for (const std::string_view n : names) list += (list.empty() ? "" : ", ") + std::string(n);
+    throw InvalidArgumentError("'" + name_or_path + "' is neither a built-in scene (" + list +
+                               ") nor a scene file");
+  }
+  return load_scene_file(name_or_path);
+}
+
+}  // namespace mink
