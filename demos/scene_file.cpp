@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "mink/engine/world.hpp"
+#include "output_files.hpp"
 
 namespace mink::cli {
 
@@ -437,11 +438,9 @@ std::string scene_to_json(const SceneDef& scene) {
 }
 
 void save_scene_file(const std::filesystem::path& path, const SceneDef& scene) {
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-  std::ofstream out(path, std::ios::binary);
+  std::ofstream out = open_output_file(path, "scene file");
   out << scene_to_json(scene);
-  out.close();
-  if (!out) throw InvalidArgumentError("cannot write scene file '" + path.string() + "'");
+  close_output_file(out, path, "scene file");
 }
 
 SceneDef resolve_scene(const std::string& name_or_path) {
