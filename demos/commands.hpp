@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <iosfwd>
+#include <string>
 
 namespace mink::cli {
 
@@ -26,6 +27,10 @@ Action add_export_scene_command(CLI::App& app, Streams streams);
 Action add_run_command(CLI::App& app, Streams streams);
 Action add_compare_command(CLI::App& app, Streams streams);
 Action add_sandbox_command(CLI::App& app, Streams streams);
+
+// The SCENE argument of the commands that run a scene: a built-in's name or a scene file,
+// resolved by resolve_scene (scene_file.hpp). `scene` holds the default.
+void add_scene_argument(CLI::App& command, std::string& scene);
 
 // Runs `mink` with the given arguments; what main() does, callable from tests.
 int run(int argc, const char* const* argv, Streams streams);

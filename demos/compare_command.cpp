@@ -14,6 +14,7 @@
 #include "mink/render/gl_context.hpp"
 #include "mink/render/png_file.hpp"
 #include "mink/render/renderer.hpp"
+#include "output_files.hpp"
 
 namespace mink::cli {
 
@@ -105,15 +106,15 @@ int run_compare(const CompareOptions& options, Streams streams) {
   const SceneDef scene = resolve_scene(options.scene);
   const ContactComparison c = compare_contacts(scene, options.steps, options.every, kBand);
   const std::filesystem::path out(options.out);
-  std::filesystem::create_directories(out);
+  make_directories(out, "--out");
   {
-    std::ofstream csv(out / "contacts.csv");
+    std::ofstream csv = open_output_file(out / "contacts.csv", "the contact counts");
     csv << "step,mink_pairs,mink_contacts,box2d_pairs,box2d_touching\n";
     for (const ContactCountRow& row : c.rows) {
       csv << row.step << ',' << row.mink_pairs << ',' << row.mink_contacts << ',' << row.box2d_pairs
           << ',' << row.box2d_touching << '\n';
     }
-    if (!csv) throw InvalidArgumentError("cannot write " + (out / "contacts.csv").string());
+    close_output_file(csv, out / "contacts.csv", "the contact counts");
   }
   plot_counts(c, options.scene, backend, out / "contacts.png");
 
@@ -170,7 +171,7 @@ Action add_compare_command(CLI::App& app, Streams streams) {
       "compare",
       "Simulate a scene in Minkowski and Box2D 2.4.1: contact counts (CSV and PNG plot) and the "
       "overlap oracle (exit 1 when a verdict differs outside a 1e-6 band).");
-  command->add_option("scene", options->scene, "built-in scene or scene file (default pyramid)");
+  add_scene_argument(*command, options->scene);
   command->add_option("--steps", options->steps, "steps to run (default 600)")
       ->check(CLI::Range(1LL, 10'000'000LL));
   command->add_option("--out", options->out, "output directory (default out/compare)");

@@ -8,9 +8,10 @@ namespace mink::cli {
 // The exit codes every `mink` command uses (README, "Exit codes").
 enum ExitCode : int {
   kSuccess = 0,
-  kInternalError = 1,  // a bug or an unexpected system failure
-  kBadInput = 2,       // usage errors, unreadable files, malformed lines, non-finite values
-  kDegenerate = 3,     // a point set with no area: fewer than 3 distinct non-collinear points
+  kInternalError = 1,   // a bug: a failure nothing else explains
+  kBadInput = 2,        // usage errors, unreadable files, malformed lines, non-finite values
+  kDegenerate = 3,      // a point set with no area: fewer than 3 distinct non-collinear points
+  kRuntimeFailure = 4,  // the environment failed: GL, ffmpeg, the file system
 };
 
 // Maps an exception from a command to its exit code and prints "mink: <message>" to `err`.

@@ -7,6 +7,7 @@
 #include "exit_codes.hpp"
 #include "mink/render/gl_context.hpp"
 #include "mink/render/png_file.hpp"
+#include "output_files.hpp"
 #include "paper_figures.hpp"
 #include "scene_view.hpp"
 
@@ -26,7 +27,7 @@ int run_paper(PaperOptions options, Streams streams) {
   parse_frame_size(options.size, options.settings.width, options.settings.height,
                    {.require_even = false, .example = "1200x700"});
   const std::filesystem::path out(options.out);
-  std::filesystem::create_directories(out);
+  make_directories(out, "--out");
   const auto context = make_offscreen_context(options.settings.backend, options.settings.width,
                                               options.settings.height);
   RendererOptions renderer_options;

@@ -9,7 +9,8 @@ namespace mink::cli {
 int run(int argc, const char* const* argv, Streams streams) {
   CLI::App app{
       "mink - Minkowski, a 2D rigid-body physics sandbox built on exact convex hulls and GJK.\n"
-      "Exit codes: 0 success, 1 internal error, 2 bad input or usage, 3 degenerate point set.",
+      "Exit codes: 0 success, 1 internal error, 2 bad input or usage, 3 degenerate point set, 4 "
+      "runtime failure (GL, ffmpeg, the file system).",
       "mink"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "help for every command");

@@ -11,13 +11,16 @@
 #include <ostream>
 #include <string>
 
+#include "body_trace.hpp"
 #include "commands.hpp"
+#include "event_log.hpp"
 #include "exit_codes.hpp"
 #include "mink/engine/scene_file.hpp"
 #include "mink/error.hpp"
 #include "mink/render/frame_sink.hpp"
 #include "mink/render/gl_context.hpp"
 #include "mink/render/renderer.hpp"
+#include "output_files.hpp"
 #include "scene_view.hpp"
 
 namespace mink::cli {
@@ -33,8 +36,10 @@ struct RunOptions {
   std::string video;
   double fps = 30;
   std::string stats;
+  std::string trace;
+  std::uint64_t trace_every = 1;
+  std::string events;
   std::string save;
-  bool no_render = false;
   std::string gl = "osmesa";
   std::string size = "1280x720";
 };
@@ -77,9 +82,6 @@ std::size_t awake_bodies(const World& world) {
 }
 
 int run_scene(const RunOptions& options, Streams streams) {
-  if (options.no_render && (options.frames || !options.video.empty())) {
-    throw InvalidArgumentError("--no-render cannot write --frames or --video");
-  }
   if (!(options.fps >= 1 && options.fps <= 1000)) {
     throw InvalidArgumentError("--fps must be in 1..1000");
   }
@@ -90,6 +92,8 @@ int run_scene(const RunOptions& options, Streams streams) {
   // The whole scene is read and checked before any output exists.
   const SceneDef scene = resolve_scene(options.scene);
   World world = build_world(scene);
+  // A fresh world's slot order is the scene's order: body i of the scene is bodies[i].
+  const std::vector<BodyId> bodies = world.bodies();
   const Real dt = scene.world.time_step;
   long long steps = 600;
   if (options.steps) steps = *options.steps;
@@ -106,7 +110,8 @@ int run_scene(const RunOptions& options, Streams streams) {
   std::unique_ptr<Renderer> renderer;
   std::unique_ptr<FrameSink> png_sink;
   std::unique_ptr<FrameSink> video_sink;
-  const bool render = !options.no_render && (options.frames || !options.video.empty());
+  // --no-render excludes both (the parser enforces it), so it never makes a GL context.
+  const bool render = options.frames || !options.video.empty();
   if (render) {
     context = make_offscreen_context(backend, width, height);
     renderer = std::make_unique<Renderer>(*context);
@@ -123,12 +128,16 @@ int run_scene(const RunOptions& options, Streams streams) {
   }
   std::ofstream stats;
   if (!options.stats.empty()) {
-    const std::filesystem::path path(options.stats);
-    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
-    stats.open(path);
-    if (!stats) throw InvalidArgumentError("cannot write --stats file '" + options.stats + "'");
+    stats = open_output_file(options.stats, "--stats file");
     stats << "step,time,bodies,awake,pairs,contacts,kinetic_energy,step_ms\n";
   }
+  std::optional<BodyTrace> trace;
+  if (!options.trace.empty()) {
+    trace.emplace(options.trace, bodies, options.trace_every);
+    trace->write_step(world);  // step 0: the initial state
+  }
+  std::optional<EventLog> events;
+  if (!options.events.empty()) events.emplace(options.events, world, bodies);
   // A frame every this many steps keeps video time equal to simulated time.
   const long long frame_every = std::max(1LL, std::llround(1.0 / (options.fps * dt)));
   Image image;
@@ -166,6 +175,8 @@ int run_scene(const RunOptions& options, Streams streams) {
                     kinetic_energy(world), ms);
       stats << line;
     }
+    if (trace) trace->write_step(world);
+    if (events) events->write_step(world);
     if (render && i % frame_every == 0) write_frame();
     progress.update(i);
   }
@@ -173,10 +184,9 @@ int run_scene(const RunOptions& options, Streams streams) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (png_sink) png_sink->close();
   if (video_sink) video_sink->close();
-  if (stats.is_open()) {
-    stats.close();
-    if (!stats) throw InvalidArgumentError("writing --stats file '" + options.stats + "' failed");
-  }
+  if (stats.is_open()) close_output_file(stats, options.stats, "--stats file");
+  if (trace) trace->close();
+  if (events) events->close();
   if (!options.save.empty()) save_scene_file(options.save, capture_scene(world));
 
   streams.out << "scene " << options.scene << '\n';
@@ -198,6 +208,12 @@ int run_scene(const RunOptions& options, Streams streams) {
                 << " frames at " << std::lround(options.fps) << " fps)\n";
   }
   if (!options.stats.empty()) streams.out << "stats: " << options.stats << '\n';
+  if (trace) {
+    streams.out << "trace: " << options.trace << " (" << trace->rows_written() << " rows)\n";
+  }
+  if (events) {
+    streams.out << "events: " << options.events << " (" << events->events_written() << " events)\n";
+  }
   if (!options.save.empty()) streams.out << "saved: " << options.save << '\n';
   return kSuccess;
 }
@@ -206,19 +222,33 @@ int run_scene(const RunOptions& options, Streams streams) {
 
 Action add_run_command(CLI::App& app, Streams streams) {
   auto options = std::make_shared<RunOptions>();
-  CLI::App* command = app.add_subcommand(
-      "run", "Run a scene (a built-in name or a scene file) headless: frames, video, stats.");
-  command->add_option("scene", options->scene,
-                      "built-in scene (see 'mink scenes') or scene file (default tumbler)");
+  CLI::App* command = app.add_subcommand("run",
+                                         "Run a scene (a built-in name or a scene file) headless: "
+                                         "frames, video, stats, traces, events.");
+  add_scene_argument(*command, options->scene);
   auto* steps = command->add_option("--steps", options->steps, "steps to run (default 600)");
   command->add_option("--seconds", options->seconds, "simulated seconds to run")->excludes(steps);
   command->add_option("--out", options->out, "directory for --frames (default out)");
-  command->add_flag("--frames", options->frames, "write every frame as a PNG in OUT/frames");
-  command->add_option("--video", options->video, "write the run as a video (e.g. demo.mp4)");
+  auto* frames =
+      command->add_flag("--frames", options->frames, "write every frame as a PNG in OUT/frames");
+  auto* video =
+      command->add_option("--video", options->video, "write the run as a video (e.g. demo.mp4)");
   command->add_option("--fps", options->fps, "frames per simulated second (default 30)");
   command->add_option("--stats", options->stats, "per-step statistics CSV");
+  auto* trace = command->add_option(
+      "--trace", options->trace,
+      "per-body CSV for plotting: step,body,x,y,angle,vx,vy,w (step 0 is the initial state)");
+  command->add_option("--trace-every", options->trace_every, "trace every K-th step (default 1)")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1'000'000'000}))
+      ->needs(trace);
+  command->add_option("--events", options->events,
+                      "contact events as JSON Lines: step, type (contact_begin, contact_end), "
+                      "shape_a, shape_b, body_a, body_b");
   command->add_option("--save", options->save, "write the final world as a scene file");
-  command->add_flag("--no-render", options->no_render, "no GL at all (statistics only)");
+  command->add_flag("--no-render")
+      ->description("no GL at all, not even loaded: statistics, traces and events only")
+      ->excludes(frames)
+      ->excludes(video);
   command->add_option("--gl", options->gl, "headless GL backend: osmesa (default) or egl");
   command->add_option("--size", options->size, "frame size WIDTHxHEIGHT (default 1280x720)");
   return [options, streams] { return run_scene(*options, streams); };

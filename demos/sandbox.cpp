@@ -4,10 +4,12 @@
 #include <array>
 #include <cctype>
 #include <cstdio>
+#include <utility>
 
 #include "mink/engine/shape_def.hpp"
 #include "mink/geometry/point_sets.hpp"
 #include "mink/render/bitmap_font.hpp"
+#include "mink/engine/scene_file.hpp"
 #include "text_wrap.hpp"
 
 namespace mink::cli {
@@ -44,14 +46,17 @@ std::string lower(std::string_view text) {
 
 }  // namespace
 
-Sandbox::Sandbox(Renderer& renderer, std::string_view scene)
-    : renderer_(renderer), scene_(scene), world_(build_world(builtin_scene(scene))) {
+Sandbox::Sandbox(Renderer& renderer, const std::string& scene)
+    : Sandbox(renderer, scene, resolve_scene(scene)) {}
+
+Sandbox::Sandbox(Renderer& renderer, std::string name, SceneDef scene)
+    : renderer_(renderer), scene_(std::move(name)), scene_def_(std::move(scene)) {
   renderer_.layers = draw_shapes | draw_contact_points;
-  fit_camera();
+  reset();
 }
 
 void Sandbox::reset() {
-  world_ = build_world(builtin_scene(scene_));
+  world_ = build_world(scene_def_);
   dragged_.reset();
   drops_ = 0;
   fit_camera();
@@ -92,8 +97,10 @@ void Sandbox::key(std::string_view name) {
     reset();
   } else if (k == "n") {
     const auto names = builtin_scene_names();
+    // From a scene file, the first built-in.
     const auto at = std::find(names.begin(), names.end(), scene_);
     scene_ = std::string(at == names.end() || at + 1 == names.end() ? names.front() : *(at + 1));
+    scene_def_ = builtin_scene(scene_);
     reset();
   } else if (k == "escape" || k == "q") {
     quit_ = true;

@@ -11,7 +11,7 @@
 
 namespace mink::cli {
 
-// The interactive sandbox, apart from any window: a world built from a built-in scene, the
+// The interactive sandbox, apart from any window: a world built from a scene, the
 // person's input (keys by name, mouse at pixels) and the frame drawn into a Renderer. The
 // window loop of `mink sandbox` feeds it SDL events; tests feed it directly.
 //
@@ -21,8 +21,11 @@ namespace mink::cli {
 // on a dynamic body drags it; on empty space it drops a random hull there.
 class Sandbox {
  public:
-  // Throws InvalidArgumentError naming an unknown scene.
-  Sandbox(Renderer& renderer, std::string_view scene);
+  // `scene` is a built-in's name or a scene file, as for `mink run`; throws
+  // InvalidArgumentError naming an unknown scene or a bad file.
+  Sandbox(Renderer& renderer, const std::string& scene);
+  // The scene already resolved (so a bad one fails before any window opens); `name` is shown.
+  Sandbox(Renderer& renderer, std::string name, SceneDef scene);
 
   void key(std::string_view name);
   void mouse_down(const Vec2& pixel);
@@ -53,6 +56,7 @@ class Sandbox {
 
   Renderer& renderer_;
   std::string scene_;
+  SceneDef scene_def_;  // what reset rebuilds, so a scene file is read once
   World world_;
   bool paused_ = false;
   bool step_once_ = false;

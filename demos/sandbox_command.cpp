@@ -7,6 +7,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -15,6 +16,8 @@
 #include "mink/render/png_file.hpp"
 #include "mink/render/sdl_window.hpp"
 #include "sandbox.hpp"
+#include "mink/engine/scene_file.hpp"
+#include "scene_view.hpp"
 
 namespace mink::cli {
 
@@ -24,8 +27,7 @@ struct SandboxOptions {
   std::string scene = "pyramid";
   std::string script;
   std::string screenshot;
-  int width = 1280;
-  int height = 720;
+  std::string size = "1280x720";
 };
 
 void handle(Sandbox& sandbox, const SDL_Event& event) {
@@ -55,15 +57,19 @@ void handle(Sandbox& sandbox, const SDL_Event& event) {
 }
 
 int run_sandbox(const SandboxOptions& options, Streams streams) {
+  int width = 0;
+  int height = 0;
+  parse_frame_size(options.size, width, height, {.require_even = false});
+  SceneDef scene = resolve_scene(options.scene);
   std::optional<ScriptPlayer> player;
   if (!options.script.empty()) {
     std::ifstream in(options.script);
     if (!in) throw InvalidArgumentError("--script '" + options.script + "' cannot be read");
     player.emplace(parse_input_script(in, options.script));
   }
-  SdlWindow window("mink sandbox", options.width, options.height, player ? false : true);
+  SdlWindow window("mink sandbox", width, height, player ? false : true);
   Renderer renderer(window);
-  Sandbox sandbox(renderer, options.scene);
+  Sandbox sandbox(renderer, options.scene, std::move(scene));
   // A scripted run's clock is the frame count at 60 frames a second, so it does the same
   // thing however fast the machine draws.
   Uint64 next_frame_ms = SDL_GetTicks64();
@@ -105,18 +111,15 @@ Action add_sandbox_command(CLI::App& app, Streams streams) {
   auto options = std::make_shared<SandboxOptions>();
   CLI::App* command = app.add_subcommand(
       "sandbox",
-      "An SDL2 window on a built-in scene: drag bodies, click to drop hulls, space pause, s "
+      "An SDL2 window on a scene: drag bodies, click to drop hulls, space pause, s "
       "step, r reset, n next scene, 1-8 debug layers, q quit.");
-  command->add_option("scene", options->scene, "built-in scene (default pyramid)");
+  add_scene_argument(*command, options->scene);
   command->add_option("--script", options->script,
                       "timed input events, one a line: TIME key NAME | mouse_down X Y | "
                       "mouse_move X Y | mouse_up X Y | screenshot | quit (times in seconds "
                       "at 60 frames a second)");
   command->add_option("--screenshot", options->screenshot, "PNG file for screenshot events");
-  command->add_option("--width", options->width, "window width (default 1280)")
-      ->check(CLI::Range(64, 8192));
-  command->add_option("--height", options->height, "window height (default 720)")
-      ->check(CLI::Range(64, 8192));
+  command->add_option("--size", options->size, "window size WIDTHxHEIGHT (default 1280x720)");
   return [options, streams] { return run_sandbox(*options, streams); };
 }
 

@@ -9,6 +9,11 @@
 
 namespace mink::cli {
 
+void add_scene_argument(CLI::App& command, std::string& scene) {
+  command.add_option("scene", scene,
+                     "built-in scene (see 'mink scenes') or scene file (default " + scene + ")");
+}
+
 Action add_scenes_command(CLI::App& app, Streams streams) {
   app.add_subcommand("scenes", "List the built-in scenes (each with its body count).");
   return [streams] {

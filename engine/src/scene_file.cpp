@@ -525,11 +525,17 @@ std::string scene_to_json(const SceneDef& scene) {
 }
 
 void save_scene_file(const std::filesystem::path& path, const SceneDef& scene) {
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  const std::string text = scene_to_json(scene);
+  std::error_code error;
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), error);
+  if (error) {
+    throw OutputError("cannot create the directory '" + path.parent_path().string() +
+                      "' for scene file '" + path.string() + "': " + error.message());
+  }
   std::ofstream out(path, std::ios::binary);
-  out << scene_to_json(scene);
+  out << text;
   out.close();
-  if (!out) throw InvalidArgumentError("cannot write scene file '" + path.string() + "'");
+  if (!out) throw OutputError("cannot write scene file '" + path.string() + "'");
 }
 
 SceneDef resolve_scene(const std::string& name_or_path) {

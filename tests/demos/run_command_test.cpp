@@ -1,12 +1,26 @@
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
 #include <string>
+#include <system_error>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "cli_test_support.hpp"
+#include "event_log.hpp"
+#include "exit_codes.hpp"
 #include "mink/engine/scene_file.hpp"
 #include "mink/engine/world.hpp"
+#include "mink/render/render_error.hpp"
 
 namespace {
 
@@ -56,11 +70,281 @@ TEST(RunCommand, StatsCsvHasOneRowPerStepAndTheIssueColumns) {
   EXPECT_NE(r.err.find("progress: step 30 of 30 (100%)"), std::string::npos) << r.err;
 }
 
+std::vector<double> parse_numbers(const std::string& row) {
+  std::vector<double> numbers;
+  std::istringstream in(row);
+  std::string field;
+  while (std::getline(in, field, ',')) numbers.push_back(std::stod(field));
+  return numbers;
+}
+
+// The trace is the in-process run's state exactly: step 0, then every K-th step.
+TEST(RunCommand, TraceHasEveryBodyAtStepZeroAndEveryKthStep) {
+  const auto dir = fresh_dir("trace");
+  const auto trace = (dir / "trace.csv").string();
+  const CliResult r = run_cli(
+      {"run", "pyramid", "--steps", "7", "--no-render", "--trace", trace, "--trace-every", "3"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto lines = split_lines(read_text(trace));
+  const SceneDef scene = builtin_scene("pyramid");
+  const std::size_t bodies = scene.bodies.size();
+  ASSERT_EQ(lines.size(), 1 + 3 * bodies);  // steps 0, 3 and 6
+  EXPECT_EQ(lines[0], "step,body,x,y,angle,vx,vy,w");
+  EXPECT_NE(r.out.find("trace: " + trace + " (" + std::to_string(3 * bodies) + " rows)"),
+            std::string::npos)
+      << r.out;
+  World world = build_world(scene);
+  const auto ids = world.bodies();
+  std::size_t line = 1;
+  for (int step = 0; step <= 6; ++step) {
+    if (step > 0) world.step();
+    if (step % 3 != 0) continue;
+    for (std::size_t i = 0; i < bodies; ++i, ++line) {
+      const std::vector<double> row = parse_numbers(lines[line]);
+      ASSERT_EQ(row.size(), 8u) << lines[line];
+      EXPECT_EQ(row[0], step);
+      EXPECT_EQ(row[1], static_cast<double>(i));
+      // Pyramid boxes have their centre of mass at the origin: the origin's velocity is the
+      // world's linear velocity.
+      const std::vector<double> want = {world.position(ids[i]).x(),
+                                        world.position(ids[i]).y(),
+                                        world.angle(ids[i]),
+                                        world.linear_velocity(ids[i]).x(),
+                                        world.linear_velocity(ids[i]).y(),
+                                        world.angular_velocity(ids[i])};
+      for (std::size_t k = 0; k < want.size(); ++k) {
+        EXPECT_EQ(row[2 + k], want[k]) << lines[line];  // 17 digits: exact round trip
+      }
+    }
+  }
+}
+
+// vx, vy are the origin's velocity, as in scene files: a body spinning about its origin, with
+// its mass off to one side, starts with an origin at rest.
+TEST(RunCommand, TraceVelocityIsTheOriginsAsInSceneFiles) {
+  const auto dir = fresh_dir("trace_origin");
+  SceneDef scene;
+  scene.world.gravity = Vec2(0, 0);
+  SceneBody body;
+  body.body.type = BodyType::dynamic;
+  body.body.position = Vec2(1, 1);
+  body.body.angular_velocity = 1;
+  body.shapes.push_back(ShapeDef::box(0.5, 0.5, Vec2(2, 0)));
+  scene.bodies.push_back(body);
+  save_scene_file(dir / "spin.json", scene);
+  const auto trace = (dir / "trace.csv").string();
+  const CliResult r = run_cli(
+      {"run", (dir / "spin.json").string(), "--steps", "1", "--no-render", "--trace", trace});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto lines = split_lines(read_text(trace));
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(parse_numbers(lines[1]), (std::vector<double>{0, 0, 1, 1, 0, 0, 0, 1}));
+  // A step later the origin has swung about the centre of mass, which moves at (0, 2): the
+  // origin's velocity is that plus w x (origin - centre), with w still 1.
+  const std::vector<double> after = parse_numbers(lines[2]);
+  const double turned = after[4];
+  EXPECT_GT(turned, 0);
+  EXPECT_NEAR(after[5], 2 * std::sin(turned), 1e-12);
+  EXPECT_NEAR(after[6], 2 - 2 * std::cos(turned), 1e-12);
+}
+
+struct EventLine {
+  std::uint64_t step;
+  std::string type;
+  std::size_t shape_a, shape_b, body_a, body_b;
+  bool operator==(const EventLine&) const = default;
+};
+
+std::ostream& operator<<(std::ostream& out, const EventLine& e) {
+  return out << e.step << ' ' << e.type << ' ' << e.shape_a << ' ' << e.shape_b << ' ' << e.body_a
+             << ' ' << e.body_b;
+}
+
+// The events file lists the in-process run's contact events, step by step, bodies by index.
+TEST(RunCommand, EventsAreTheWorldsContactEventsAsJsonLines) {
+  const auto dir = fresh_dir("events");
+  const auto events = (dir / "events.jsonl").string();
+  const CliResult r = run_cli({"run", "rain", "--steps", "90", "--no-render", "--events", events});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<EventLine> got;
+  for (const std::string& line : split_lines(read_text(events))) {
+    const auto json = nlohmann::json::parse(line);
+    ASSERT_EQ(json.size(), 6u) << line;
+    got.push_back({json.at("step").get<std::uint64_t>(), json.at("type").get<std::string>(),
+                   json.at("shape_a").get<std::size_t>(), json.at("shape_b").get<std::size_t>(),
+                   json.at("body_a").get<std::size_t>(), json.at("body_b").get<std::size_t>()});
+  }
+  World world = build_world(builtin_scene("rain"));
+  const auto ids = world.bodies();
+  const auto index = [&](ShapeId shape) {
+    return static_cast<std::size_t>(std::find(ids.begin(), ids.end(), world.shape_body(shape)) -
+                                    ids.begin());
+  };
+  std::vector<EventLine> want;
+  std::size_t ends = 0;
+  for (int step = 1; step <= 90; ++step) {
+    world.step();
+    for (const ContactBeginEvent& e : world.contact_begin_events()) {
+      want.push_back({world.step_count(), "contact_begin", e.shape_a.index, e.shape_b.index,
+                      index(e.shape_a), index(e.shape_b)});
+    }
+    for (const ContactEndEvent& e : world.contact_end_events()) {
+      want.push_back({world.step_count(), "contact_end", e.shape_a.index, e.shape_b.index,
+                      index(e.shape_a), index(e.shape_b)});
+      ++ends;
+    }
+  }
+  EXPECT_GT(ends, 0u);  // both kinds are exercised
+  EXPECT_GT(want.size(), ends);
+  EXPECT_EQ(got, want);
+}
+
+// An end event may name a shape destroyed since: the log still names its body, from the
+// start of the run, and does not reach into the world for it.
+TEST(EventLog, EndEventsOfDestroyedShapesKeepTheirBodies) {
+  const auto dir = fresh_dir("event_log");
+  SceneDef scene = pyramid_scene(2);  // ground, two boxes, one on top
+  World world = build_world(scene);
+  const auto ids = world.bodies();
+  cli::EventLog log(dir / "events.jsonl", world, ids);
+  for (int i = 0; i < 5; ++i) {
+    world.step();
+    log.write_step(world);
+  }
+  const ShapeId top = world.body_shapes(ids[3])[0];
+  world.destroy_body(ids[3]);
+  ASSERT_FALSE(world.is_valid(top));
+  ASSERT_FALSE(world.contact_end_events().empty());
+  log.write_step(world);
+  log.close();
+  std::size_t ends = 0;
+  for (const std::string& line : split_lines(read_text(dir / "events.jsonl"))) {
+    const auto json = nlohmann::json::parse(line);
+    if (json.at("type") != "contact_end") continue;
+    ++ends;
+    EXPECT_EQ(json.at("step"), 5);
+    const bool top_is_a = json.at("shape_a") == top.index;
+    EXPECT_TRUE(top_is_a || json.at("shape_b") == top.index) << line;
+    EXPECT_EQ(json.at(top_is_a ? "body_a" : "body_b"), 3) << line;
+    EXPECT_TRUE(json.contains("body_a") && json.contains("body_b")) << line;
+  }
+  EXPECT_EQ(ends, world.contact_end_events().size());
+}
+
+// Each bad command line exits 2 and says what is wrong, naming the options or values at fault.
 TEST(RunCommand, SecondsAndStepsAreExclusiveAndBadOptionsExit2) {
-  EXPECT_EQ(run_cli({"run", "pyramid", "--steps", "3", "--seconds", "1", "--no-render"}).code, 2);
-  EXPECT_EQ(run_cli({"run", "no_such_scene", "--no-render"}).code, 2);
-  EXPECT_EQ(run_cli({"run", "pyramid", "--no-render", "--frames"}).code, 2);
-  EXPECT_EQ(run_cli({"run", "pyramid", "--size", "101x100", "--frames"}).code, 2);
+  const auto expect_usage_error = [](std::vector<std::string> args,
+                                     std::vector<std::string> mentions) {
+    args.insert(args.begin(), "run");
+    const CliResult r = run_cli(args);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    EXPECT_EQ(r.err.rfind("mink: ", 0), 0u) << r.err;
+    for (const std::string& mention : mentions) {
+      EXPECT_NE(r.err.find(mention), std::string::npos) << "no '" << mention << "' in " << r.err;
+    }
+  };
+  expect_usage_error({"pyramid", "--steps", "3", "--seconds", "1", "--no-render"},
+                     {"--steps", "--seconds", "excludes"});
+  expect_usage_error({"no_such_scene", "--no-render"},
+                     {"'no_such_scene' is neither a built-in scene", "tumbler", "scene file"});
+  expect_usage_error({"pyramid", "--no-render", "--frames"}, {"--no-render", "--frames"});
+  expect_usage_error({"pyramid", "--no-render", "--video", "x.mp4"}, {"--no-render", "--video"});
+  expect_usage_error({"pyramid", "--size", "101x100", "--frames"},
+                     {"--size '101x100'", "both even and in 64..8192"});
+  expect_usage_error({"pyramid", "--trace-every", "2"}, {"--trace-every", "--trace"});
+  expect_usage_error({"pyramid", "--trace", "t.csv", "--trace-every", "0"}, {"--trace-every"});
+}
+
+// The file system failing is exit 4 with the path named, and nothing is run first.
+TEST(RunCommand, UnwritableOutputsExit4NamingThePath) {
+  const auto dir = fresh_dir("unwritable");
+  const auto file = (dir / "plain_file").string();
+  write_text(file, "not a directory\n");
+  const auto expect_runtime_failure = [](const std::vector<std::string>& args,
+                                         const std::string& mention) {
+    std::vector<std::string> full = {"run", "pyramid", "--steps", "2", "--no-render"};
+    full.insert(full.end(), args.begin(), args.end());
+    const CliResult r = run_cli(full);
+    EXPECT_EQ(r.code, 4) << r.err;
+    EXPECT_NE(r.err.find(mention), std::string::npos) << "no '" << mention << "' in " << r.err;
+  };
+  // A directory under a regular file cannot be made.
+  expect_runtime_failure({"--stats", file + "/sub/stats.csv"},
+                         "cannot create the directory '" + file + "/sub' for --stats file");
+  expect_runtime_failure({"--trace", file + "/trace.csv"},
+                         "cannot create the directory '" + file + "' for --trace file");
+  expect_runtime_failure({"--save", file + "/end.json"},
+                         "cannot create the directory '" + file + "' for scene file");
+  // A directory where the file should be cannot be written (even by root).
+  expect_runtime_failure({"--stats", dir.string()},
+                         "cannot write --stats file '" + dir.string() + "': Is a directory");
+  expect_runtime_failure({"--events", dir.string()},
+                         "cannot write --events file '" + dir.string() + "': Is a directory");
+}
+
+TEST(RunCommand, FrameDirectoryUnderAFileExits4) {
+  const auto dir = fresh_dir("frames_under_file");
+  const auto file = dir / "plain_file";
+  write_text(file, "not a directory\n");
+  const CliResult r = run_cli({"run", "pyramid", "--steps", "2", "--frames", "--size", "64x64",
+                               "--out", (file / "out").string()});
+  EXPECT_EQ(r.code, 4) << r.err;
+  EXPECT_NE(r.err.find("cannot make the frame directory " + (file / "out" / "frames").string()),
+            std::string::npos)
+      << r.err;
+}
+
+TEST(ExitCodes, EnvironmentFailuresAreRuntimeFailures) {
+  std::ostringstream err;
+  EXPECT_EQ(cli::report_error(GlContextError("osmesa backend: cannot open libOSMesa.so.8"), err),
+            cli::kRuntimeFailure);
+  EXPECT_EQ(cli::report_error(OutputError("cannot start ffmpeg"), err), cli::kRuntimeFailure);
+  EXPECT_EQ(cli::report_error(std::filesystem::filesystem_error(
+                                  "mkdir", std::make_error_code(std::errc::not_a_directory)),
+                              err),
+            cli::kRuntimeFailure);
+  EXPECT_EQ(cli::report_error(InvalidArgumentError("bad"), err), cli::kBadInput);
+  EXPECT_EQ(cli::report_error(DegenerateInputError("flat"), err), cli::kDegenerate);
+  EXPECT_EQ(cli::report_error(std::logic_error("bug"), err), cli::kInternalError);
+  EXPECT_NE(err.str().find("mink: osmesa backend: cannot open libOSMesa.so.8\n"),
+            std::string::npos);
+}
+
+// `mink` as a process, its standard error captured, with `environment` before the command.
+CliResult run_process(const std::string& environment, const std::string& args,
+                      const std::filesystem::path& dir) {
+  const auto out = dir / "stdout.txt";
+  const auto err = dir / "stderr.txt";
+  const std::string command = environment + " '" + std::string(MINK_BINARY) + "' " + args + " > '" +
+                              out.string() + "' 2> '" + err.string() + "'";
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
+}
+
+// --no-render loads no GL library at all (the dynamic loader's log says what was loaded);
+// the same run with --frames does, which shows the log would tell.
+TEST(RunCommand, NoRenderLoadsNoGlLibrary) {
+  const auto dir = fresh_dir("no_gl");
+  const CliResult plain = run_process("LD_DEBUG=libs", "run pyramid --steps 2 --no-render", dir);
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_NE(plain.err.find("libstdc++"), std::string::npos);  // the log is there
+  EXPECT_EQ(plain.err.find("libOSMesa"), std::string::npos);
+  EXPECT_EQ(plain.err.find("libEGL.so"), std::string::npos);
+  const CliResult drawn = run_process(
+      "LD_DEBUG=libs",
+      "run pyramid --steps 2 --frames --size 64x64 --out '" + (dir / "out").string() + "'", dir);
+  ASSERT_EQ(drawn.code, 0) << drawn.err;
+  EXPECT_NE(drawn.err.find("libOSMesa"), std::string::npos);
+}
+
+TEST(RunCommand, MissingFfmpegExits4) {
+  const auto dir = fresh_dir("no_ffmpeg");
+  const CliResult r = run_process(
+      "PATH=/nonexistent",
+      "run pyramid --steps 2 --size 64x64 --video '" + (dir / "run.mp4").string() + "'", dir);
+  EXPECT_EQ(r.code, 4) << r.err;
+  EXPECT_NE(r.err.find("mink: cannot start ffmpeg"), std::string::npos) << r.err;
 }
 
 // Resuming from --save: the pose and velocities of every body are kept exactly, but the

@@ -138,7 +138,7 @@ TEST(Events, BeginEventsCarryTheManifoldAndHitsTheApproachSpeed) {
   ShapeDef floor = ShapeDef::box(20, 0.5, Vec2(0, -0.5));
   floor.enable_hit_events = true;
   world.create_shape(ground, floor);
-  const BodyId ball = add_ball(world, {0, 0.6}, 0.25, {}, {0, -6});
+  add_ball(world, {0, 0.6}, 0.25, {}, {0, -6});
   bool began = false, hit = false;
   for (int i = 0; i < 30 && !(began && hit); ++i) {
     world.step();

@@ -51,13 +51,23 @@ TEST(Sleep, AnAwakeBodyHittingASleepingStackWakesIt) {
   for (int i = 0; i < 180; ++i) world.step();
   ASSERT_FALSE(world.is_awake(boxes[0]));
   const BodyId falling = add_box(world, {0.3, 6});
+  const ShapeId falling_shape = world.body_shapes(falling)[0];
+  const ShapeId top_shape = world.body_shapes(boxes.back())[0];
+  // The stack sleeps until the step in which the falling box starts touching its top box, and
+  // wakes in that very step (a touching contact joins the two islands).
   bool woke = false;
+  bool hit = false;
   for (int i = 0; i < 120 && !woke; ++i) {
     world.step();
+    for (const ContactBeginEvent& e : world.contact_begin_events()) {
+      hit = hit || (e.shape_a == falling_shape && e.shape_b == top_shape) ||
+            (e.shape_a == top_shape && e.shape_b == falling_shape);
+    }
     woke = world.is_awake(boxes[0]);
+    EXPECT_EQ(woke, hit) << "step " << world.step_count();
   }
   EXPECT_TRUE(woke);
-  EXPECT_TRUE(world.is_valid(falling));
+  for (const BodyId b : boxes) EXPECT_TRUE(world.is_awake(b));
 }
 
 TEST(Sleep, SleepingOffKeepsEveryBodyAwake) {

@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include "cli_test_support.hpp"
 #include "mink/error.hpp"
 #include "render_test_support.hpp"
+#include "mink/engine/scene_file.hpp"
 
 namespace {
 
@@ -86,6 +88,28 @@ TEST(Sandbox, DraggingPullsTheGrabbedBodyToTheCursor) {
   EXPECT_LT((sandbox.world().world_center(top) - target).norm(), 0.5);
   sandbox.mouse_up(camera.world_to_pixel(target));
   EXPECT_FALSE(sandbox.dragged());
+}
+
+// A scene file works as a scene, as for `mink run`; reset rebuilds it, n goes on to the
+// built-ins.
+TEST(Sandbox, OpensAndResetsASceneFile) {
+  const auto path = mink_test::fresh_dir("sandbox_scene") / "two.json";
+  mink::SceneDef scene = mink::pyramid_scene(2);
+  scene.bodies[1].body.angular_velocity = 3;
+  mink::save_scene_file(path, scene);
+  Headless frame(mink::GlBackend::osmesa, 64, 64);
+  Sandbox sandbox(*frame.renderer, path.string());
+  EXPECT_EQ(sandbox.scene(), path.string());
+  ASSERT_EQ(sandbox.world().body_count(), 4u);
+  const mink::BodyId spinning = sandbox.world().bodies()[1];
+  EXPECT_EQ(sandbox.world().angular_velocity(spinning), 3);
+  sandbox.frame();
+  sandbox.key("r");
+  EXPECT_EQ(sandbox.world().step_count(), 0u);
+  EXPECT_EQ(sandbox.world().body_count(), 4u);
+  EXPECT_EQ(sandbox.world().angular_velocity(sandbox.world().bodies()[1]), 3);
+  sandbox.key("n");
+  EXPECT_EQ(sandbox.scene(), mink::builtin_scene_names().front());
 }
 
 TEST(Sandbox, UnknownSceneIsNamed) {

@@ -9,6 +9,7 @@
 #include "cli_test_support.hpp"
 #include "mink/render/png_file.hpp"
 #include "render_test_support.hpp"
+#include "mink/engine/scene_file.hpp"
 
 namespace {
 
@@ -24,15 +25,16 @@ Rgb rgb(const mink::Image& image, int x, int y) {
   return {p[0], p[1], p[2]};
 }
 
-// Runs `mink sandbox pyramid` at 640 x 480 with the script and returns its screenshot.
-mink::Image shoot(const std::string& name, const std::string& script) {
+// Runs `mink sandbox SCENE --size SIZE` with the script and returns its screenshot.
+mink::Image shoot(const std::string& name, const std::string& script,
+                  const std::string& scene = "pyramid", const std::string& size = "640x480") {
   const auto script_file = mink_test::temp_path("mink_sandbox_" + name + ".txt");
   const auto shot = mink_test::temp_path("mink_sandbox_" + name + ".png");
   mink_test::write_text(script_file, script);
   std::filesystem::remove(shot);
   const mink_test::CliResult result =
-      mink_test::run_cli({"sandbox", "pyramid", "--script", script_file.string(), "--screenshot",
-                          shot.string(), "--width", "640", "--height", "480"});
+      mink_test::run_cli({"sandbox", scene, "--script", script_file.string(), "--screenshot",
+                          shot.string(), "--size", size});
   EXPECT_EQ(result.code, 0) << result.err;
   EXPECT_NE(result.out.find("wrote"), std::string::npos) << result.out;
   std::filesystem::remove(script_file);
@@ -63,6 +65,28 @@ TEST(SandboxWindow, ScriptedDropStepAndLayerToggle) {
   const mink::Image toggled =
       shoot("toggled", "0 key space\n0.1 key 2\n0.2 screenshot\n0.25 quit\n");
   EXPECT_GT(count_pixels(toggled, kAabb), 500);  // key 2 turned the AABB layer on
+}
+
+// The SCENE argument and --size are those of `mink run`: a scene file opens, and a bad size or
+// scene is a usage error before any window.
+TEST(SandboxWindow, TakesASceneFileAndASize) {
+  const auto scene_file = mink_test::temp_path("mink_sandbox_scene.json");
+  mink::save_scene_file(scene_file, mink::pyramid_scene(2));
+  const mink::Image shot = shoot("scene_file", "0 key space\n0.1 screenshot\n0.15 quit\n",
+                                 scene_file.string(), "320x240");
+  std::filesystem::remove(scene_file);
+  ASSERT_EQ(shot.width, 320);
+  ASSERT_EQ(shot.height, 240);
+  EXPECT_GT(count_pixels(shot, kDynamic), 100);  // the file's three boxes
+
+  const auto bad_size = mink_test::run_cli({"sandbox", "pyramid", "--size", "640"});
+  EXPECT_EQ(bad_size.code, 2);
+  EXPECT_NE(bad_size.err.find("--size '640' is not WIDTHxHEIGHT"), std::string::npos)
+      << bad_size.err;
+  const auto bad_scene = mink_test::run_cli({"sandbox", "no_such_scene"});
+  EXPECT_EQ(bad_scene.code, 2);
+  EXPECT_NE(bad_scene.err.find("'no_such_scene' is neither a built-in scene"), std::string::npos)
+      << bad_scene.err;
 }
 
 }  // namespace

@@ -31,6 +31,13 @@ class NonFiniteInputError : public Error {
   std::size_t index_;
 };
 
+/// An output could not be written (a scene file, a PNG, the ffmpeg process behind a video, a
+/// directory): the environment failed, not the input. The message names the path.
+class OutputError : public Error {
+ public:
+  using Error::Error;
+};
+
 /// Input with no area: fewer than three distinct, non-collinear points.
 class DegenerateInputError : public Error {
  public:

@@ -38,7 +38,7 @@ SceneDef load_scene_file(const std::filesystem::path& path);
 /// round-trip form: parse_scene_json(scene_to_json(s)) gives back exactly `s`.
 std::string scene_to_json(const SceneDef& scene);
 /// @brief Writes scene_to_json(scene), creating the parent directories.
-/// @throws InvalidArgumentError when the file cannot be written
+/// @throws OutputError (the environment failed) when the directory or file cannot be written
 void save_scene_file(const std::filesystem::path& path, const SceneDef& scene);
 
 /// @brief A built-in's name (builtin_scene_names), or else a path to a scene file.

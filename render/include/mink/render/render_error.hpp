@@ -13,10 +13,4 @@ class GlContextError : public Error {
   using Error::Error;
 };
 
-/// @brief An output could not be written: a PNG file, or the ffmpeg process behind a video.
-class OutputError : public Error {
- public:
-  using Error::Error;
-};
-
 }  // namespace mink

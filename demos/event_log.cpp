@@ -1,0 +1,84 @@
+#include "event_log.hpp"
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "output_files.hpp"
+
+namespace mink::cli {
+
+namespace {
+
+constexpr std::string_view kWhat = "--events file";
+
+// Ids are compared with their generation, so a reused slot is not mistaken for the old object.
+template <typename Id>
+std::uint64_t key(Id id) {
+  return (std::uint64_t{id.index} << 32) | id.generation;
+}
+
+}  // namespace
+
+struct EventLog::Line {
+  nlohmann::ordered_json json;  // ordered: step and type come first, for people reading it
+};
+
+EventLog::EventLog(const std::filesystem::path& path, const World& world,
+                   std::span<const BodyId> bodies)
+    : path_(path), out_(open_output_file(path, kWhat)) {
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    body_indices_[key(bodies[i])] = i;
+    for (const ShapeId shape : world.body_shapes(bodies[i])) shape_bodies_[key(shape)] = i;
+  }
+}
+
+EventLog::~EventLog() = default;
+
+void EventLog::write_step(const World& world) {
+  step_ = world.step_count();
+  for (const ContactBeginEvent& event : world.contact_begin_events()) contact_begin(world, event);
+  for (const ContactEndEvent& event : world.contact_end_events()) contact_end(world, event);
+}
+
+void EventLog::close() {
+  close_output_file(out_, path_, kWhat);
+}
+
+void EventLog::contact_begin(const World& world, const ContactBeginEvent& event) {
+  // The engine's begin event carries no manifold yet, so no "normal" or "points".
+  write_line(pair_line(world, "contact_begin", event.shape_a, event.shape_b));
+}
+
+void EventLog::contact_end(const World& world, const ContactEndEvent& event) {
+  write_line(pair_line(world, "contact_end", event.shape_a, event.shape_b));
+}
+
+EventLog::Line EventLog::pair_line(const World& world, std::string_view type, ShapeId a,
+                                   ShapeId b) const {
+  Line line;
+  line.json["step"] = step_;
+  line.json["type"] = std::string(type);
+  line.json["shape_a"] = a.index;
+  line.json["shape_b"] = b.index;
+  if (const auto body = body_index(world, a)) line.json["body_a"] = *body;
+  if (const auto body = body_index(world, b)) line.json["body_b"] = *body;
+  return line;
+}
+
+void EventLog::write_line(const Line& line) {
+  out_ << line.json.dump() << '\n';
+  ++events_;
+}
+
+std::optional<std::size_t> EventLog::body_index(const World& world, ShapeId shape) const {
+  if (const auto known = shape_bodies_.find(key(shape)); known != shape_bodies_.end()) {
+    return known->second;
+  }
+  // A shape made during the run, on a body of the scene.
+  if (!world.is_valid(shape)) return std::nullopt;
+  const auto body = body_indices_.find(key(world.shape_body(shape)));
+  if (body == body_indices_.end()) return std::nullopt;
+  return body->second;
+}
+
+}  // namespace mink::cli
