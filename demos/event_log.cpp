@@ -17,6 +17,10 @@ std::uint64_t key(Id id) {
   return (std::uint64_t{id.index} << 32) | id.generation;
 }
 
+nlohmann::ordered_json xy(const Vec2& v) {
+  return nlohmann::ordered_json::array({v.x(), v.y()});
+}
+
 }  // namespace
 
 struct EventLog::Line {
@@ -38,6 +42,9 @@ void EventLog::write_step(const World& world) {
   step_ = world.step_count();
   for (const ContactBeginEvent& event : world.contact_begin_events()) contact_begin(world, event);
   for (const ContactEndEvent& event : world.contact_end_events()) contact_end(world, event);
+  for (const ContactHitEvent& event : world.contact_hit_events()) hit(world, event);
+  for (const SensorBeginEvent& event : world.sensor_begin_events()) sensor_begin(world, event);
+  for (const SensorEndEvent& event : world.sensor_end_events()) sensor_end(world, event);
 }
 
 void EventLog::close() {
@@ -45,8 +52,32 @@ void EventLog::close() {
 }
 
 void EventLog::contact_begin(const World& world, const ContactBeginEvent& event) {
-  // The engine's begin event carries no manifold yet, so no "normal" or "points".
-  write_line(pair_line(world, "contact_begin", event.shape_a, event.shape_b));
+  Line line = pair_line(world, "contact_begin", event.shape_a, event.shape_b);
+  const Manifold& m = event.manifold;
+  line.json["normal"] = xy(m.normal);
+  line.json["points"] = nlohmann::ordered_json::array();
+  line.json["separations"] = nlohmann::ordered_json::array();
+  for (int i = 0; i < m.point_count; ++i) {
+    line.json["points"].push_back(xy(m.points[static_cast<std::size_t>(i)].point));
+    line.json["separations"].push_back(m.points[static_cast<std::size_t>(i)].separation);
+  }
+  write_line(line);
+}
+
+void EventLog::sensor_begin(const World& world, const SensorBeginEvent& event) {
+  write_line(pair_line(world, "sensor_begin", event.sensor, event.visitor));
+}
+
+void EventLog::sensor_end(const World& world, const SensorEndEvent& event) {
+  write_line(pair_line(world, "sensor_end", event.sensor, event.visitor));
+}
+
+void EventLog::hit(const World& world, const ContactHitEvent& event) {
+  Line line = pair_line(world, "hit", event.shape_a, event.shape_b);
+  line.json["point"] = xy(event.point);
+  line.json["normal"] = xy(event.normal);
+  line.json["speed"] = event.approach_speed;
+  write_line(line);
 }
 
 void EventLog::contact_end(const World& world, const ContactEndEvent& event) {

@@ -15,13 +15,13 @@ namespace mink::cli {
 
 // `mink run --events`: the world's events as JSON Lines, one object per event, each with
 // "step" (the step that raised it, 1-based), "type", "shape_a", "shape_b" (shape slot
-// indices) and "body_a", "body_b" (indices into the scene's bodies array). Types so far:
-// "contact_begin" and "contact_end".
+// indices) and "body_a", "body_b" (indices into the scene's bodies array). Types:
+// "contact_begin" (with "normal" [x, y] from A to B, "points" [[x, y], ...] and
+// "separations"), "contact_end", "sensor_begin" and "sensor_end" (shape_a and body_a are the
+// sensor's), and "hit" (with "point", "normal" and "speed", the approach speed in m/s).
 //
-// Each event type has its own member function filling one line, so a new engine event is a
-// few lines: call pair_line() with its shapes (for a sensor event the sensor's shape first,
-// so body_a is the sensor's body), add its own fields (a hit's "point", "normal", "speed"),
-// write_line(), and call the function from write_step().
+// Each event type has its own member function filling one line: pair_line() with its shapes,
+// its own fields, write_line().
 class EventLog {
  public:
   // `bodies[i]` is body i of the scene. Throws OutputError when `path` cannot be written.
@@ -41,6 +41,9 @@ class EventLog {
 
   void contact_begin(const World& world, const ContactBeginEvent& event);
   void contact_end(const World& world, const ContactEndEvent& event);
+  void sensor_begin(const World& world, const SensorBeginEvent& event);
+  void sensor_end(const World& world, const SensorEndEvent& event);
+  void hit(const World& world, const ContactHitEvent& event);
 
   // A line with the fields every event has: step, type, the two shapes and their bodies.
   Line pair_line(const World& world, std::string_view type, ShapeId a, ShapeId b) const;

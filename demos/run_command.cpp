@@ -242,8 +242,8 @@ Action add_run_command(CLI::App& app, Streams streams) {
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1'000'000'000}))
       ->needs(trace);
   command->add_option("--events", options->events,
-                      "contact events as JSON Lines: step, type (contact_begin, contact_end), "
-                      "shape_a, shape_b, body_a, body_b");
+                      "events as JSON Lines: step, type (contact_begin, contact_end, hit, "
+                      "sensor_begin, sensor_end), shape_a, shape_b, body_a, body_b");
   command->add_option("--save", options->save, "write the final world as a scene file");
   command->add_flag("--no-render")
       ->description("no GL at all, not even loaded: statistics, traces and events only")

@@ -31,8 +31,7 @@ World build_world(const SceneDef& scene) {
 
 namespace {
 
-// The fields every kind of shape keeps, as the world reports them. The event flags have no
-// World accessor, so they keep their ShapeDef defaults.
+// The fields every kind of shape keeps, as the world reports them.
 ShapeDef captured_material(const World& world, ShapeId id) {
   ShapeDef shape;
   shape.type = world.shape_type(id);
@@ -43,32 +42,22 @@ ShapeDef captured_material(const World& world, ShapeId id) {
   shape.filter = world.shape_filter(id);
   shape.is_sensor = world.is_sensor(id);
   shape.user_data = world.shape_user_data(id);
+  shape.enable_contact_events = world.shape_contact_events(id);
+  shape.enable_sensor_events = world.shape_sensor_events(id);
+  shape.enable_hit_events = world.shape_hit_events(id);
   return shape;
 }
 
-// True when `next` continues the chain whose last segment so far is `last`: a create_chain
-// call makes consecutive ids whose segments share their end points and see each other as
-// ghosts.
-bool continues_chain(ShapeId last_id, const ChainSegment& last, ShapeId next_id,
-                     const ChainSegment& next) {
-  return next_id.index == last_id.index + 1 && next.segment.point1 == last.segment.point2 &&
-         next.ghost1 == last.segment.point1 && last.ghost2 == next.segment.point2;
-}
-
-// Rebuilds the chains of one body from its segments: each maximal run of segments that
-// continue one another is one chain, closed when its last segment leads back to its first.
+// One chain from its segments (in creation order), closed when it was made as a loop.
 void capture_chain(const World& world, std::span<const ShapeId> run,
                    std::vector<ShapeDef>& shapes) {
   const auto segment_of = [&](ShapeId id) {
-    return std::get<ChainSegment>(world.shape_geometry(id));
+    return std::get<ChainSegment>(world.shape_geometry(id)).segment;
   };
   ShapeDef chain = captured_material(world, run.front());
-  const ChainSegment first = segment_of(run.front());
-  const ChainSegment last = segment_of(run.back());
-  chain.points.push_back(first.segment.point1);
-  for (const ShapeId id : run) chain.points.push_back(segment_of(id).segment.point2);
-  chain.loop = run.size() >= 3 && last.segment.point2 == first.segment.point1 &&
-               first.ghost1 == last.segment.point1 && last.ghost2 == first.segment.point2;
+  chain.loop = world.shape_chain(run.front())->loop;
+  chain.points.push_back(segment_of(run.front()).point1);
+  for (const ShapeId id : run) chain.points.push_back(segment_of(id).point2);
   if (chain.loop) chain.points.pop_back();  // the loop closes itself
   shapes.push_back(std::move(chain));
 }
@@ -79,11 +68,11 @@ std::vector<ShapeDef> captured_shapes(const World& world, BodyId body) {
   for (std::size_t i = 0; i < ids.size();) {
     const ShapeGeometry& geometry = world.shape_geometry(ids[i]);
     if (kind_of(geometry) == ShapeKind::chain_segment) {
+      // A chain's segments stand together in the body's shape list, in creation order.
+      const std::uint32_t chain = world.shape_chain(ids[i])->chain;
       std::size_t end = i + 1;
-      while (
-          end < ids.size() && kind_of(world.shape_geometry(ids[end])) == ShapeKind::chain_segment &&
-          continues_chain(ids[end - 1], std::get<ChainSegment>(world.shape_geometry(ids[end - 1])),
-                          ids[end], std::get<ChainSegment>(world.shape_geometry(ids[end])))) {
+      while (end < ids.size() && world.shape_chain(ids[end]) &&
+             world.shape_chain(ids[end])->chain == chain) {
         ++end;
       }
       capture_chain(world, std::span(ids).subspan(i, end - i), shapes);

@@ -282,6 +282,20 @@ bool World::is_sensor(ShapeId id) const {
 std::uint64_t World::shape_user_data(ShapeId id) const {
   return state_->shape(id).user_data;
 }
+bool World::shape_contact_events(ShapeId id) const {
+  return state_->shape(id).contact_events;
+}
+bool World::shape_sensor_events(ShapeId id) const {
+  return state_->shape(id).sensor_events;
+}
+bool World::shape_hit_events(ShapeId id) const {
+  return state_->shape(id).hit_events;
+}
+std::optional<ChainMembership> World::shape_chain(ShapeId id) const {
+  const Shape& s = state_->shape(id);
+  if (s.chain == detail::kNoChain) return std::nullopt;
+  return ChainMembership{s.chain, s.chain_loop};
+}
 Real World::shape_density(ShapeId id) const {
   return state_->shape(id).density;
 }

@@ -160,43 +160,88 @@ std::ostream& operator<<(std::ostream& out, const EventLine& e) {
              << ' ' << e.body_b;
 }
 
-// The events file lists the in-process run's contact events, step by step, bodies by index.
-TEST(RunCommand, EventsAreTheWorldsContactEventsAsJsonLines) {
+// The events file lists the in-process run's events, step by step, bodies by index: contacts
+// (begin events with their manifold), hits and sensor events, in the `shapes` scene, which has
+// a sensor band.
+TEST(RunCommand, EventsAreTheWorldsEventsAsJsonLines) {
   const auto dir = fresh_dir("events");
   const auto events = (dir / "events.jsonl").string();
-  const CliResult r = run_cli({"run", "rain", "--steps", "90", "--no-render", "--events", events});
+  SceneDef scene = builtin_scene("shapes");
+  for (SceneBody& body : scene.bodies) {
+    for (ShapeDef& shape : body.shapes) shape.enable_hit_events = true;
+  }
+  const auto scene_path = (dir / "shapes.json").string();
+  save_scene_file(scene_path, scene);
+  const CliResult r =
+      run_cli({"run", scene_path, "--steps", "120", "--no-render", "--events", events});
   ASSERT_EQ(r.code, 0) << r.err;
   std::vector<EventLine> got;
+  std::vector<nlohmann::json> begins, hits;
   for (const std::string& line : split_lines(read_text(events))) {
     const auto json = nlohmann::json::parse(line);
-    ASSERT_EQ(json.size(), 6u) << line;
     got.push_back({json.at("step").get<std::uint64_t>(), json.at("type").get<std::string>(),
                    json.at("shape_a").get<std::size_t>(), json.at("shape_b").get<std::size_t>(),
                    json.at("body_a").get<std::size_t>(), json.at("body_b").get<std::size_t>()});
+    if (json.at("type") == "contact_begin") begins.push_back(json);
+    if (json.at("type") == "hit") hits.push_back(json);
   }
-  World world = build_world(builtin_scene("rain"));
+  World world = build_world(scene);
   const auto ids = world.bodies();
   const auto index = [&](ShapeId shape) {
     return static_cast<std::size_t>(std::find(ids.begin(), ids.end(), world.shape_body(shape)) -
                                     ids.begin());
   };
   std::vector<EventLine> want;
-  std::size_t ends = 0;
-  for (int step = 1; step <= 90; ++step) {
+  std::vector<Manifold> manifolds;
+  std::vector<ContactHitEvent> hit_events;
+  std::size_t ends = 0, sensor_events = 0;
+  const auto add = [&](std::string_view type, ShapeId a, ShapeId b) {
+    want.push_back({world.step_count(), std::string(type), a.index, b.index, index(a), index(b)});
+  };
+  for (int step = 1; step <= 120; ++step) {
     world.step();
     for (const ContactBeginEvent& e : world.contact_begin_events()) {
-      want.push_back({world.step_count(), "contact_begin", e.shape_a.index, e.shape_b.index,
-                      index(e.shape_a), index(e.shape_b)});
+      add("contact_begin", e.shape_a, e.shape_b);
+      manifolds.push_back(e.manifold);
     }
     for (const ContactEndEvent& e : world.contact_end_events()) {
-      want.push_back({world.step_count(), "contact_end", e.shape_a.index, e.shape_b.index,
-                      index(e.shape_a), index(e.shape_b)});
+      add("contact_end", e.shape_a, e.shape_b);
       ++ends;
     }
+    for (const ContactHitEvent& e : world.contact_hit_events()) {
+      add("hit", e.shape_a, e.shape_b);
+      hit_events.push_back(e);
+    }
+    for (const SensorBeginEvent& e : world.sensor_begin_events()) {
+      add("sensor_begin", e.sensor, e.visitor);
+      ++sensor_events;
+    }
+    for (const SensorEndEvent& e : world.sensor_end_events()) {
+      add("sensor_end", e.sensor, e.visitor);
+      ++sensor_events;
+    }
   }
-  EXPECT_GT(ends, 0u);  // both kinds are exercised
-  EXPECT_GT(want.size(), ends);
+  EXPECT_GT(ends, 0u);  // every kind is exercised
+  EXPECT_GT(sensor_events, 0u);
+  EXPECT_FALSE(hit_events.empty());
   EXPECT_EQ(got, want);
+  ASSERT_EQ(begins.size(), manifolds.size());
+  for (std::size_t i = 0; i < begins.size(); ++i) {
+    const Manifold& m = manifolds[i];
+    EXPECT_EQ(begins[i].at("normal"), nlohmann::json::array({m.normal.x(), m.normal.y()}));
+    ASSERT_EQ(begins[i].at("points").size(), static_cast<std::size_t>(m.point_count));
+    for (int j = 0; j < m.point_count; ++j) {
+      const ManifoldPoint& p = m.points[static_cast<std::size_t>(j)];
+      EXPECT_EQ(begins[i].at("points")[j], nlohmann::json::array({p.point.x(), p.point.y()}));
+      EXPECT_EQ(begins[i].at("separations")[j], p.separation);
+    }
+  }
+  ASSERT_EQ(hits.size(), hit_events.size());
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    EXPECT_EQ(hits[i].at("speed"), hit_events[i].approach_speed);
+    EXPECT_EQ(hits[i].at("point"),
+              nlohmann::json::array({hit_events[i].point.x(), hit_events[i].point.y()}));
+  }
 }
 
 // An end event may name a shape destroyed since: the log still names its body, from the

@@ -172,6 +172,34 @@ TEST(ShapeKinds, BadDefinitionsNameTheirField) {
   EXPECT_EQ(world.shape_count(), 0u);
 }
 
+TEST(ShapeKinds, CaptureKeepsEventFlagsAndChainsExactly) {
+  World world;
+  const BodyId body = world.create_body({});
+  ShapeDef quiet = ShapeDef::circle(1);
+  quiet.enable_contact_events = false;
+  quiet.enable_sensor_events = false;
+  quiet.enable_hit_events = true;
+  world.create_shape(body, quiet);
+  // Two chains back to back, the second a loop: captured as two chains, not one run.
+  world.create_chain(body, ShapeDef::chain({Vec2(0, 0), Vec2(1, 0), Vec2(2, 0)}));
+  world.create_chain(body, ShapeDef::chain({Vec2(2, 0), Vec2(3, 0), Vec2(3, 1)}, true));
+  const SceneDef scene = capture_scene(world);
+  ASSERT_EQ(scene.bodies.size(), 1u);
+  const std::vector<ShapeDef>& shapes = scene.bodies[0].shapes;
+  ASSERT_EQ(shapes.size(), 3u);
+  EXPECT_FALSE(shapes[0].enable_contact_events);
+  EXPECT_FALSE(shapes[0].enable_sensor_events);
+  EXPECT_TRUE(shapes[0].enable_hit_events);
+  EXPECT_EQ(shapes[1].points.size(), 3u);
+  EXPECT_FALSE(shapes[1].loop);
+  EXPECT_EQ(shapes[2].points, (std::vector<Vec2>{Vec2(2, 0), Vec2(3, 0), Vec2(3, 1)}));
+  EXPECT_TRUE(shapes[2].loop);
+  const std::vector<ShapeId> ids = world.body_shapes(body);
+  EXPECT_FALSE(world.shape_chain(ids[0]));
+  EXPECT_EQ(world.shape_chain(ids[1])->chain, 0u);
+  EXPECT_EQ(world.shape_chain(ids.back())->chain, 1u);
+}
+
 TEST(ShapeKinds, QueriesSeeEveryKind) {
   World world;
   const BodyId body = world.create_body({});

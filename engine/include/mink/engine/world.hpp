@@ -28,6 +28,12 @@ struct ShapeRayHit {
   RayHit hit;     ///< where, in world coordinates
 };
 
+/// @brief The chain a chain segment belongs to (World::shape_chain).
+struct ChainMembership {
+  std::uint32_t chain = 0;  ///< the create_chain call that made it, numbered from 0
+  bool loop = false;        ///< that chain closes on itself
+};
+
 /// @brief What World::advance did.
 struct AdvanceResult {
   int steps = 0;  ///< fixed steps run by this call
@@ -207,6 +213,15 @@ class World {
   bool is_sensor(ShapeId id) const;
   /// @brief As given in ShapeDef::user_data.
   std::uint64_t shape_user_data(ShapeId id) const;
+  /// @brief As given in ShapeDef::enable_contact_events.
+  bool shape_contact_events(ShapeId id) const;
+  /// @brief As given in ShapeDef::enable_sensor_events.
+  bool shape_sensor_events(ShapeId id) const;
+  /// @brief As given in ShapeDef::enable_hit_events.
+  bool shape_hit_events(ShapeId id) const;
+  /// @brief For a chain's segment: which create_chain call made it (numbered from 0 in each
+  /// world) and whether that chain loops; nothing for other shapes.
+  std::optional<ChainMembership> shape_chain(ShapeId id) const;
   /// @brief Changes the density; the body's mass is recomputed.
   void set_shape_density(ShapeId id, Real density);
   /// @brief Changes the friction of the shape and of its existing contacts.
