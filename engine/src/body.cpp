@@ -7,22 +7,18 @@
 #include <numbers>
 #include <string>
 
+#include "checks.hpp"
 #include "mink/error.hpp"
 #include "world_state.hpp"
 
 namespace mink {
 
+using detail::finite;
+using detail::require;
+
 using detail::Body;
 
 namespace {
-
-void require(bool ok, const std::string& what) {
-  if (!ok) throw InvalidArgumentError(what);
-}
-
-bool finite(const Vec2& v) {
-  return std::isfinite(v.x()) && std::isfinite(v.y());
-}
 
 void check_body_def(const BodyDef& def) {
   require(finite(def.position), "BodyDef.position must be finite");

@@ -336,27 +336,32 @@ void World::set_shape_density(ShapeId id, Real density) {
   w.wake(b);
 }
 
+namespace {
+
+// Mixes the shape's material into its contacts again.
+void remix_contacts(WorldState& w, std::uint32_t shape_index) {
+  for (const std::uint32_t ci : w.bodies[w.shapes[shape_index].body].contacts) {
+    detail::Contact& c = w.contacts[ci];
+    if (c.shape_a != shape_index && c.shape_b != shape_index) continue;
+    const Shape& a = w.shapes[c.shape_a];
+    const Shape& b = w.shapes[c.shape_b];
+    c.friction = detail::mix_friction(a.friction, b.friction);
+    c.restitution = detail::mix_restitution(a.restitution, b.restitution);
+  }
+}
+
+}  // namespace
+
 void World::set_shape_friction(ShapeId id, Real friction) {
   check_material_value(id, friction, "set_shape_friction");
-  WorldState& w = *state_;
-  w.shape(id).friction = friction;
-  for (detail::Contact& c : w.contacts) {
-    if (c.shape_a == id.index || c.shape_b == id.index) {
-      c.friction = detail::mix_friction(w.shapes[c.shape_a].friction, w.shapes[c.shape_b].friction);
-    }
-  }
+  state_->shape(id).friction = friction;
+  remix_contacts(*state_, id.index);
 }
 
 void World::set_shape_restitution(ShapeId id, Real restitution) {
   check_material_value(id, restitution, "set_shape_restitution");
-  WorldState& w = *state_;
-  w.shape(id).restitution = restitution;
-  for (detail::Contact& c : w.contacts) {
-    if (c.shape_a == id.index || c.shape_b == id.index) {
-      c.restitution =
-          detail::mix_restitution(w.shapes[c.shape_a].restitution, w.shapes[c.shape_b].restitution);
-    }
-  }
+  state_->shape(id).restitution = restitution;
+  remix_contacts(*state_, id.index);
 }
 
 void World::set_shape_filter(ShapeId id, const Filter& filter) {

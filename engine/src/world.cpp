@@ -6,12 +6,16 @@
 #include <cmath>
 #include <string>
 
+#include "checks.hpp"
 #include "mink/engine/stale_id_error.hpp"
 #include "mink/error.hpp"
 #include "mink/geometry/polygon.hpp"
 #include "world_state.hpp"
 
 namespace mink {
+
+using detail::finite;
+using detail::require;
 
 std::string to_string(BodyId id) {
   return "BodyId{index " + std::to_string(id.index) + ", generation " +
@@ -24,14 +28,6 @@ std::string to_string(ShapeId id) {
 }
 
 namespace {
-
-void require(bool ok, const std::string& what) {
-  if (!ok) throw InvalidArgumentError(what);
-}
-
-bool finite(const Vec2& v) {
-  return std::isfinite(v.x()) && std::isfinite(v.y());
-}
 
 void check_world_def(const WorldDef& def) {
   require(finite(def.gravity), "WorldDef.gravity must be finite");

@@ -5,36 +5,13 @@
 #include <cmath>
 #include <limits>
 
+#include "clip.hpp"
 #include "face_separation.hpp"
 #include "gjk_distance_loop.hpp"
 
 namespace mink::detail {
 
 namespace {
-
-struct ClipVertex {
-  Vec2 point{0, 0};
-  std::uint32_t id = 0;
-};
-
-// Keeps the part of the segment (or single point) `in` with plane . p - limit <= 0; a crossing
-// point is added only for a strict sign change, so a vertex on the side line is not doubled.
-int clip(const std::array<ClipVertex, 2>& in, int count_in, std::array<ClipVertex, 2>& out,
-         const Vec2& plane, Real limit, std::uint32_t crossing_id) {
-  int count = 0;
-  if (count_in == 0) return 0;
-  const Real d0 = plane.dot(in[0].point) - limit;
-  if (d0 <= 0) out[static_cast<std::size_t>(count++)] = in[0];
-  if (count_in < 2) return count;
-  const Real d1 = plane.dot(in[1].point) - limit;
-  if (d1 <= 0) out[static_cast<std::size_t>(count++)] = in[1];
-  if ((d0 < 0 && d1 > 0) || (d0 > 0 && d1 < 0)) {
-    const Real t = d0 / (d0 - d1);
-    out[static_cast<std::size_t>(count++)] = {in[0].point + t * (in[1].point - in[0].point),
-                                              crossing_id};
-  }
-  return count;
-}
 
 Vec2 unit_right_normal(const Vec2& p, const Vec2& q) {
   const Vec2 e = q - p;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 
+#include "clip.hpp"
 #include "face_separation.hpp"
 #include "mink/narrowphase/gjk_distance.hpp"
 #include "mink/narrowphase/support.hpp"
@@ -11,6 +12,9 @@
 namespace mink {
 
 namespace {
+
+using detail::clip;
+using detail::ClipVertex;
 
 // Feature ids: a contact point is a vertex of the incident edge inside the reference face
 // (kind 0: reference edge, incident vertex), where the incident edge crosses a side of the
@@ -25,31 +29,6 @@ enum FeatureKind : std::uint32_t { kVertexInFace = 0, kClipped = 1, kNearest = 2
 std::uint32_t feature_id(std::uint32_t reference, std::uint32_t incident, FeatureKind kind) {
   return (reference & kIndexMask) | ((incident & kIndexMask) << 14) |
          (static_cast<std::uint32_t>(kind) << 28);
-}
-
-struct ClipVertex {
-  Vec2 point;
-  std::uint32_t id;
-};
-
-// Keeps the part of the segment (or single point) `in` with plane . p - limit <= 0. A
-// crossing point is added only for a strict sign change, so a vertex exactly on the side line
-// is not duplicated.
-int clip(const std::array<ClipVertex, 2>& in, int count_in, std::array<ClipVertex, 2>& out,
-         const Vec2& plane, Real limit, std::uint32_t crossing_id) {
-  int count = 0;
-  if (count_in == 0) return 0;
-  const Real d0 = plane.dot(in[0].point) - limit;
-  if (d0 <= 0) out[static_cast<std::size_t>(count++)] = in[0];
-  if (count_in < 2) return count;
-  const Real d1 = plane.dot(in[1].point) - limit;
-  if (d1 <= 0) out[static_cast<std::size_t>(count++)] = in[1];
-  if ((d0 < 0 && d1 > 0) || (d0 > 0 && d1 < 0)) {
-    const Real t = d0 / (d0 - d1);
-    out[static_cast<std::size_t>(count++)] = {in[0].point + t * (in[1].point - in[0].point),
-                                              crossing_id};
-  }
-  return count;
 }
 
 // The incident hull's edge most opposed to `normal` (incident frame).

@@ -106,6 +106,21 @@ TEST(Mutators, MassDataOverridesUntilTheShapesChange) {
             std::string::npos);
 }
 
+TEST(Mutators, FrictionChangesReachExistingContacts) {
+  World world;
+  test::add_ground(world);
+  const BodyId box = test::add_box(world, {0, 0.5});
+  for (int i = 0; i < 10; ++i) world.step();
+  ASSERT_EQ(world.body_contacts(box).size(), 1u);
+  world.set_shape_friction(world.body_shapes(box)[0], 0);  // the ground keeps 0.6: mix is 0
+  world.set_linear_velocity(box, Vec2(2, 0));
+  for (int i = 0; i < 30; ++i) world.step();
+  EXPECT_NEAR(world.linear_velocity(box).x(), 2, 1e-6);  // nothing slows it
+  world.set_shape_friction(world.body_shapes(box)[0], 0.6);
+  for (int i = 0; i < 30; ++i) world.step();
+  EXPECT_LT(world.linear_velocity(box).x(), 0.1);  // 6 m/s^2 stops it within a third of a second
+}
+
 TEST(Mutators, StepWithItsOwnTimeStepAndSubsteps) {
   WorldDef def;
   def.gravity = Vec2(0, 0);
