@@ -226,17 +226,7 @@ Manifold collide_cores(const Core& a, const Pose& pose_a, const Core& b, const P
     p.point =
         pose_a.apply(0.5 * ((gjk.point_a + a.radius * normal) + (gjk.point_b - b.radius * normal)));
     p.separation = separation;
-    // The lowest vertex pair of the final simplex names the features independently of the
-    // order GJK found them in.
-    const SimplexCache& s = gjk.simplex;
-    std::uint32_t ia = s.index_a[0];
-    std::uint32_t ib = s.index_b[0];
-    for (std::size_t k = 1; k < static_cast<std::size_t>(s.count); ++k) {
-      if (s.index_a[k] < ia || (s.index_a[k] == ia && s.index_b[k] < ib)) {
-        ia = s.index_a[k];
-        ib = s.index_b[k];
-      }
-    }
+    const auto [ia, ib] = gjk.simplex.lowest_pair();
     p.id = feature_id(ia, ib, kNearest);
     return m;
   }

@@ -132,17 +132,7 @@ Manifold collide_hulls(const PreparedHull& a, const Pose& pose_a, const Prepared
       manifold.normal = nearest.normal;
       point.point = 0.5 * (nearest.point_a + nearest.point_b);
       point.separation = nearest.distance;
-      // The lowest index pair of the final simplex names the features independently of the
-      // order GJK found them in.
-      const SimplexCache& s = nearest.simplex;
-      std::uint32_t ia = s.index_a[0];
-      std::uint32_t ib = s.index_b[0];
-      for (std::size_t k = 1; k < static_cast<std::size_t>(s.count); ++k) {
-        if (s.index_a[k] < ia || (s.index_a[k] == ia && s.index_b[k] < ib)) {
-          ia = s.index_a[k];
-          ib = s.index_b[k];
-        }
-      }
+      const auto [ia, ib] = nearest.simplex.lowest_pair();
       point.id = feature_id(ia, ib, kNearest);
     } else {
       // Overlapping: the incident hull's deepest vertex, unclipped.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 #include "mink/narrowphase/pose.hpp"
@@ -33,6 +34,18 @@ struct SimplexCache {
   int count = 0;                           ///< 0 (cold) to 3
   std::array<std::uint32_t, 3> index_a{};  ///< vertex indices into A, oldest first
   std::array<std::uint32_t, 3> index_b{};  ///< vertex indices into B, oldest first
+
+  /// The lowest (A, B) vertex pair of the simplex: names the nearest features independently of
+  /// the order GJK found them in (feature ids for warm starting). Needs count >= 1.
+  std::array<std::uint32_t, 2> lowest_pair() const noexcept {
+    std::array<std::uint32_t, 2> best{index_a[0], index_b[0]};
+    for (std::size_t k = 1; k < static_cast<std::size_t>(count); ++k) {
+      if (index_a[k] < best[0] || (index_a[k] == best[0] && index_b[k] < best[1])) {
+        best = {index_a[k], index_b[k]};
+      }
+    }
+    return best;
+  }
 };
 
 /// @brief The points of an index-pair simplex for the posed hulls.
