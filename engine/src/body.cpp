@@ -148,6 +148,7 @@ BodyId World::create_body(const BodyDef& def) {
 
 void World::destroy_body(BodyId id) {
   Body& b = state_->body(id);
+  while (!b.joints.empty()) state_->destroy_joint(b.joints.back());
   while (!b.shapes.empty()) destroy_shape(state_->shape_id(b.shapes.back()));
   b.contacts.clear();
   state_->bodies.release(id.index);  // a stale awake-list entry is dropped next step
@@ -364,6 +365,10 @@ void World::set_body_type(BodyId id, BodyType type) {
   // The broadphase files static and moving proxies apart, and contacts depend on the types.
   for (std::uint32_t s : b.shapes) w.refresh_proxy(s);
   for (std::uint32_t s : b.shapes) w.update_seams(s, false);
+  for (std::uint32_t j : b.joints) w.recolor_joint(j);
+  for (std::uint32_t j : b.joints) {
+    for (int k = 0; k < w.joints[j].body_count; ++k) w.wake(w.bodies[w.joints[j].body[k]]);
+  }
 }
 
 void World::set_enabled(BodyId id, bool enabled) {

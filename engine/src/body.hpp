@@ -46,6 +46,7 @@ struct alignas(64) Body {
   // Contacts this body is in (indices into WorldState::contacts), so a step reaches the
   // contacts of awake bodies without scanning the sleeping ones.
   std::vector<std::uint32_t> contacts;
+  std::vector<std::uint32_t> joints;  // joints this body is in (slots), a gear in all four
   bool in_awake_list = false;
 
   Pose pose() const { return {origin, rotation}; }

@@ -120,7 +120,8 @@ bool WorldState::should_make_contact(std::uint32_t sa, std::uint32_t sb) const {
   const Body& body_b = bodies[shape_b.body];
   if (body_a.type != BodyType::dynamic && body_b.type != BodyType::dynamic) return false;
   if (shape_a.type == ShapeType::chain && shape_b.type == ShapeType::chain) return false;
-  return should_collide(shape_a.filter, shape_b.filter);
+  if (!should_collide(shape_a.filter, shape_b.filter)) return false;
+  return !joint_prevents_contact(shape_a.body, shape_b.body);
 }
 
 void WorldState::update_pairs() {

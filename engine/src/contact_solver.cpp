@@ -37,6 +37,7 @@
 
 #include "constraint_graph.hpp"
 #include "contact_kernels.hpp"
+#include "joint_solver.hpp"
 
 namespace mink::detail {
 
@@ -155,7 +156,7 @@ void ContactSolver::impulses(std::uint32_t index, Real normal[2], Real tangent[2
 }
 
 void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
-                          const SolverSettings& settings) {
+                          const SolverSettings& settings, JointStages* joints) {
   SolverBody* body_data = bodies.data();
   WideConstraint* wide_data = wide_.data();
   // Largest impulses are only needed when something bounces.
@@ -173,12 +174,14 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
   const Real inv_h = settings.inv_h, max_push = settings.contact_push_max_velocity;
   for (int substep = 0; substep < settings.substeps; ++substep) {
     integrate_velocities(bodies, params, settings);
+    if (joints) joints->warm_start(body_data);
     if (wide_mode_) {
       wide_pass([&](WideConstraint* b, WideConstraint* e, WideMaxImpulse*) {
         warm_start_wide(body_data, b, e);
       });
     }
     scalar_pass([&](ContactConstraint& c) { warm_start_one(body_data, c); });
+    if (joints) joints->solve(body_data, true);
     if (wide_mode_) {
       wide_pass([&](WideConstraint* b, WideConstraint* e, WideMaxImpulse* m) {
         solve_wide(body_data, b, e, m, inv_h, max_push, true);
@@ -186,6 +189,7 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
     }
     scalar_pass([&](ContactConstraint& c) { solve_one(body_data, c, inv_h, max_push, true); });
     integrate_positions(bodies, settings.h);
+    if (joints) joints->solve(body_data, false);
     if (wide_mode_) {
       wide_pass([&](WideConstraint* b, WideConstraint* e, WideMaxImpulse* m) {
         solve_wide(body_data, b, e, m, inv_h, max_push, false);

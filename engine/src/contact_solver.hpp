@@ -68,6 +68,7 @@ struct SolverSettings {
 
 // Four constraints side by side, one per lane, for the wide (SIMD) path.
 struct WideConstraint;
+class JointStages;
 struct WideMaxImpulse;
 
 // The bodies of one constraint (indices into the solver body array), and whether the solver
@@ -104,8 +105,9 @@ class ContactSolver {
   // Constraint `index` (as passed to begin), once each, then finish().
   void set(std::uint32_t index, const ContactConstraint& constraint);
   void finish();
+  // `joints`, when given, runs its part of each stage before the contacts.
   void solve(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
-             const SolverSettings& settings);
+             const SolverSettings& settings, JointStages* joints);
   // The accumulated impulses of constraint `index` after solve().
   void impulses(std::uint32_t index, Real normal[2], Real tangent[2]) const;
 

@@ -9,8 +9,8 @@ namespace mink {
 using detail::Body;
 using detail::Contact;
 
-// Islands are found from the awake bodies only: a walk over touching contacts between dynamic
-// bodies gathers each island that holds an awake body (sleeping members included, so that they
+// Islands are found from the awake bodies only: a walk over touching contacts and joints
+// between dynamic bodies gathers each island that holds an awake body (sleeping members included, so that they
 // wake with it), and an island of sleeping bodies is never visited: it costs nothing. An island
 // sleeps when all its bodies have been slow for time_to_sleep, and wakes as a whole when any
 // member is moving (woken by the API, hit by an awake body or a moving kinematic body).
@@ -27,6 +27,16 @@ void WorldState::update_islands() {
     Body& other = a.type == BodyType::kinematic ? b : a;
     if (kinematic.velocity.squaredNorm() > 0 || kinematic.angular_velocity != 0) {
       other.sleep_time = 0;
+    }
+  }
+  // So does a moving kinematic body through a joint.
+  for (const std::uint32_t i : awake_list) {
+    const Body& k = bodies[i];
+    if (k.type != BodyType::kinematic || !k.alive || k.joints.empty()) continue;
+    if (k.velocity.squaredNorm() == 0 && k.angular_velocity == 0) continue;
+    for (const std::uint32_t j : k.joints) {
+      const detail::Joint& joint = joints[j];
+      for (int m = 0; m < joint.body_count; ++m) bodies[joint.body[m]].sleep_time = 0;
     }
   }
   std::size_t islands = 0;
@@ -46,16 +56,21 @@ void WorldState::update_islands() {
       island_members.push_back(i);
       const Body& b = bodies[i];
       min_sleep = std::min(min_sleep, b.allow_sleep ? b.sleep_time : Real{0});
-      for (const std::uint32_t ci : b.contacts) {
-        const Contact& c = contacts[ci];
-        if (!c.touching) continue;
-        const std::uint32_t j = c.body_a == i ? c.body_b : c.body_a;
+      const auto reach = [&](std::uint32_t j) {
         const Body& other = bodies[j];
         if (other.type != BodyType::dynamic || !other.enabled || island_stamp[j] == step_count) {
-          continue;
+          return;
         }
         island_stamp[j] = step_count;
         island_stack.push_back(j);
+      };
+      for (const std::uint32_t ci : b.contacts) {
+        const Contact& c = contacts[ci];
+        if (c.touching) reach(c.body_a == i ? c.body_b : c.body_a);
+      }
+      for (const std::uint32_t ji : b.joints) {
+        const detail::Joint& joint = joints[ji];
+        for (int m = 0; m < joint.body_count; ++m) reach(joint.body[m]);
       }
     }
     const bool awake = min_sleep < def.time_to_sleep;

@@ -46,6 +46,7 @@ void WorldState::prepare_contacts() {
     solver_to_body.push_back(i);
   }
   const auto still = static_cast<std::int32_t>(solver_bodies.size());
+  still_body = still;
   solver_bodies.emplace_back();
   solver_params.emplace_back();
   counters.awake_bodies = solver_to_body.size();
@@ -167,7 +168,8 @@ void WorldState::solve() {
   settings.contact_push_max_velocity = def.contact_push_max_velocity;
   settings.restitution_threshold = def.restitution_threshold;
   settings.substeps = substeps;
-  contact_solver.solve(solver_bodies, solver_params, settings);
+  contact_solver.solve(solver_bodies, solver_params, settings,
+                       joint_stages.empty() ? nullptr : &joint_stages);
 
   for (std::uint32_t r = 0; r < constraint_contacts.size(); ++r) {
     Contact& c = contacts[constraint_contacts[r]];

@@ -39,6 +39,10 @@ void check_world_def(const WorldDef& def) {
           "WorldDef.contact_hertz must be finite and non-negative");
   require(std::isfinite(def.contact_damping_ratio) && def.contact_damping_ratio >= 0,
           "WorldDef.contact_damping_ratio must be finite and non-negative");
+  require(std::isfinite(def.joint_hertz) && def.joint_hertz >= 0,
+          "WorldDef.joint_hertz must be finite and non-negative");
+  require(std::isfinite(def.joint_damping_ratio) && def.joint_damping_ratio >= 0,
+          "WorldDef.joint_damping_ratio must be finite and non-negative");
   require(std::isfinite(def.contact_push_max_velocity) && def.contact_push_max_velocity >= 0,
           "WorldDef.contact_push_max_velocity must be finite and non-negative");
   require(std::isfinite(def.restitution_threshold) && def.restitution_threshold >= 0,
@@ -164,6 +168,7 @@ void WorldState::clear_events() {
   sensor_begin_events.clear();
   sensor_end_events.clear();
   move_events.clear();
+  joint_break_events.clear();
 }
 
 // One step: pair update -> narrowphase -> islands and sleep -> soft-step solver -> broadphase
@@ -190,8 +195,10 @@ void World::run_step(bool clear_events, Real time_step, int substeps) {
   }
   const auto t3 = Clock::now();
   w.prepare_contacts();
+  w.prepare_joints();
   const auto t4 = Clock::now();
   w.solve();
+  w.finish_joints();
   const auto t5 = Clock::now();
   w.finish_step();
   w.update_sensors();

@@ -178,6 +178,14 @@ void World::draw(DebugDraw& draw) const {
     }
     if (draw.layers & draw_centers_of_mass) draw.draw_point(b.center, 3, velocity_color);
   }
+  if (draw.layers & draw_joints) {
+    for (const detail::Joint& j : w.joints) {
+      if (!j.alive) continue;
+      const detail::JointBodyState a = w.joint_body_state(j.body[0]);
+      const detail::JointBodyState b = w.joint_body_state(j.body[1]);
+      std::visit([&](const auto& k) { detail::draw(k, a, b, draw); }, j.kind);
+    }
+  }
 }
 
 }  // namespace mink

@@ -9,6 +9,8 @@
 #include "contact.hpp"
 #include "contact_solver.hpp"
 #include "id_pool.hpp"
+#include "joint.hpp"
+#include "joint_solver.hpp"
 #include "mink/broadphase/sweep_and_prune.hpp"
 #include "mink/engine/contact_events.hpp"
 #include "mink/engine/world.hpp"
@@ -24,6 +26,7 @@ struct WorldState {
   std::uint32_t serial = 0;  // this world's number, carried by every id it issues
   detail::IdPool<detail::Body> bodies;
   detail::IdPool<detail::Shape> shapes;
+  detail::IdPool<detail::Joint> joints;
 
   SweepAndPrune broadphase;
   PairEvents pair_events;
@@ -49,6 +52,7 @@ struct WorldState {
   std::vector<SensorBeginEvent> sensor_begin_events;
   std::vector<SensorEndEvent> sensor_end_events;
   std::vector<BodyMoveEvent> move_events;
+  std::vector<JointBreakEvent> joint_break_events;
   std::vector<std::uint32_t> fell_asleep;  // bodies the last step put to sleep
   StepCounters counters;
   StepProfile profile;
@@ -70,6 +74,9 @@ struct WorldState {
   std::vector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
   std::vector<detail::ConstraintBodies> constraint_bodies, sorted_bodies;
   detail::ContactSolver contact_solver;
+  std::int32_t still_body = 0;              // the solver body standing in for the unmoving
+  std::vector<std::uint32_t> step_joints;   // joints of moving bodies this step, solve order
+  detail::JointStages joint_stages;
   std::vector<std::uint64_t> island_stamp;  // per body: the step whose island pass reached it
   std::vector<std::uint32_t> island_stack, island_members, woken;
   std::vector<ProxyId> query_scratch;
@@ -80,6 +87,9 @@ struct WorldState {
   const detail::Shape& shape(ShapeId id) const { return const_cast<WorldState*>(this)->shape(id); }
   ShapeId shape_id(std::uint32_t index) const { return {index, shapes[index].generation, serial}; }
   BodyId body_id(std::uint32_t index) const { return {index, bodies[index].generation, serial}; }
+  detail::Joint& joint(JointId id) { return joints.get(id, serial, "joint"); }
+  const detail::Joint& joint(JointId id) const { return const_cast<WorldState*>(this)->joint(id); }
+  JointId joint_id(std::uint32_t index) const { return {index, joints[index].generation, serial}; }
 
   void clear_events();
   // body.cpp
@@ -113,6 +123,16 @@ struct WorldState {
   void destroy_sensor(std::uint32_t shape_index);
   // island.cpp
   void update_islands();
+  // joint.cpp
+  void destroy_joint(std::uint32_t index);
+  // Gives the joint back its colour and takes one again with its bodies' current types.
+  void recolor_joint(std::uint32_t index);
+  // True when a joint between the two bodies keeps their shapes from colliding.
+  bool joint_prevents_contact(std::uint32_t body_a, std::uint32_t body_b) const;
+  detail::JointBodyState joint_body_state(std::uint32_t body) const;
+  // joint_solver.cpp
+  void prepare_joints();
+  void finish_joints();
   // solver_stages.cpp
   void prepare_contacts();
   void solve();

@@ -53,6 +53,15 @@ struct BodyMoveEvent {
   std::uint64_t user_data = 0;  ///< the body's user data
 };
 
+/// @brief A joint's constraint force or torque exceeded its break threshold during the last
+/// step (JointBase::break_force, break_torque); what to do is the caller's choice.
+struct JointBreakEvent {
+  JointId joint;                ///< the joint
+  Vec2 force{0, 0};             ///< constraint force on body B, N, world frame
+  Real torque = 0;              ///< constraint torque on body B, N m
+  std::uint64_t user_data = 0;  ///< the joint's user data
+};
+
 /// @brief One contact of a body (World::body_contacts).
 struct ContactData {
   ShapeId shape_a;    ///< one shape of the pair
@@ -70,6 +79,7 @@ struct StepCounters {
   std::size_t islands = 0;               ///< awake islands
   std::size_t constraint_colors = 0;     ///< graph colours the solver used
   std::size_t overflow_constraints = 0;  ///< contacts solved one at a time (colours ran out)
+  std::size_t joints = 0;                ///< joints the solver ran (of moving bodies)
 };
 
 /// @brief Wall time of each phase of the last step, in milliseconds (for tuning; never for tests).

@@ -24,6 +24,7 @@ enum DrawLayer : std::uint32_t {
   draw_velocities = 1u << 5,        ///< linear velocity of each body
   draw_sleep_state = 1u << 6,       ///< sleeping bodies in their own colour
   draw_centers_of_mass = 1u << 7,   ///< a point at each dynamic body's centre of mass
+  draw_joints = 1u << 8,            ///< anchors, axes and limits of each joint
 };
 
 /// The only link between the engine and rendering: the engine describes what to draw in
@@ -55,7 +56,7 @@ class DebugDraw {
                                     Color outline);
 
   /// DrawLayer flags the caller wants drawn.
-  std::uint32_t layers = draw_shapes | draw_contact_points;
+  std::uint32_t layers = draw_shapes | draw_contact_points | draw_joints;
 };
 
 }  // namespace mink

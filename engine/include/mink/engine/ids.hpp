@@ -30,9 +30,21 @@ struct ShapeId {
   bool operator==(const ShapeId&) const = default;
 };
 
+/// @brief Handle to a joint; generation- and world-checked like BodyId.
+struct JointId {
+  std::uint32_t index = std::numeric_limits<std::uint32_t>::max();  ///< slot; max() when null
+  std::uint32_t generation = 0;  ///< the slot's generation at issue
+  std::uint32_t world = 0;       ///< the issuing world's serial number (0: none)
+  /// @brief True for a default-constructed id, which names nothing.
+  bool is_null() const noexcept { return index == std::numeric_limits<std::uint32_t>::max(); }
+  bool operator==(const JointId&) const = default;
+};
+
 /// @brief "BodyId{index I, generation G, world W}", as error messages name ids.
 std::string to_string(BodyId id);
 /// @brief "ShapeId{index I, generation G, world W}".
 std::string to_string(ShapeId id);
+/// @brief "JointId{index I, generation G, world W}".
+std::string to_string(JointId id);
 
 }  // namespace mink

@@ -12,6 +12,7 @@
 #include "mink/engine/debug_draw.hpp"
 #include "mink/engine/filter.hpp"
 #include "mink/engine/ids.hpp"
+#include "mink/engine/joint_def.hpp"
 #include "mink/engine/shape_def.hpp"
 #include "mink/engine/world_def.hpp"
 #include "mink/narrowphase/pose.hpp"
@@ -243,6 +244,76 @@ class World {
 
   /// @}
 
+  /// @name Joints
+  /// A joint is destroyed with either of its bodies (and a gear with either of its joints).
+  /// Creating or destroying one wakes its bodies. Settings take effect at the next step.
+  /// @{
+
+  /// @brief Adds a joint of the definition's kind.
+  /// @throws StaleIdError for a dead body or joint named by `def`; InvalidArgumentError naming
+  /// the first bad field (the same body twice, a non-finite value, a negative max force,
+  /// lower > upper, a gear on a joint that is neither revolute nor prismatic...).
+  JointId create_joint(const JointDef& def);
+  /// @brief Destroys the joint (and gears built on it); `id` becomes stale.
+  void destroy_joint(JointId id);
+  /// @brief True when `id` names a live joint of this world.
+  bool is_valid(JointId id) const noexcept;
+  /// @brief Number of live joints.
+  std::size_t joint_count() const noexcept;
+  std::vector<JointId> joints() const;  ///< live joints in slot order
+  /// @brief The body's live joints, in slot order.
+  std::vector<JointId> body_joints(BodyId id) const;
+  JointType joint_type(JointId id) const;  ///< which kind
+  /// @brief The joint's current settings (setters below change them), in its kind's definition.
+  JointDef joint_def(JointId id) const;
+  BodyId joint_body_a(JointId id) const;  ///< for a gear: B of its first joint
+  BodyId joint_body_b(JointId id) const;  ///< for a gear: B of its second joint
+  /// @brief Anchor on A in world coordinates (a motor joint: A's origin; a gear: A's centre).
+  Vec2 joint_anchor_a(JointId id) const;
+  /// @brief Anchor on B in world coordinates.
+  Vec2 joint_anchor_b(JointId id) const;
+  /// @brief Constraint force the joint put on body B during the last step (N, world frame).
+  Vec2 joint_force(JointId id) const;
+  /// @brief Constraint torque the joint put on body B during the last step (N m).
+  Real joint_torque(JointId id) const;
+  /// The joint's free coordinate now: revolute angle (radians, counted through full turns),
+  /// prismatic and wheel translation, distance and pulley length (pulley: length_a +
+  /// ratio * length_b), 0 for the others.
+  Real joint_coordinate(JointId id) const;
+  /// @brief The coordinate's rate of change now (rad/s or m/s), 0 where it has none.
+  Real joint_speed(JointId id) const;
+
+  /// The motor of a revolute, prismatic, distance or wheel joint.
+  /// @throws InvalidArgumentError for other kinds, or (setter) negative or non-finite values.
+  JointMotor joint_motor(JointId id) const;
+  void set_joint_motor(JointId id, const JointMotor& motor);
+  /// The spring of a revolute, prismatic, distance or wheel joint.
+  /// @throws InvalidArgumentError for other kinds, or (setter) negative or non-finite values.
+  JointSpring joint_spring(JointId id) const;
+  void set_joint_spring(JointId id, const JointSpring& spring);
+  /// The limit of a revolute, prismatic, distance or wheel joint.
+  /// @throws InvalidArgumentError for other kinds, or (setter) lower > upper, non-finite values.
+  JointLimit joint_limit(JointId id) const;
+  void set_joint_limit(JointId id, const JointLimit& limit);
+  /// @brief A distance joint's rest length.
+  /// @throws InvalidArgumentError for other kinds or a length that is not positive and finite.
+  void set_distance_length(JointId id, Real length);
+  /// @brief A motor joint's target: B's origin in A's frame and B's angle relative to A.
+  /// @throws InvalidArgumentError for other kinds or non-finite values.
+  void set_motor_target(JointId id, const Vec2& linear_offset, Real angular_offset);
+  /// @brief A motor joint's force and torque bounds.
+  /// @throws InvalidArgumentError for other kinds or negative or non-finite values.
+  void set_motor_limits(JointId id, Real max_force, Real max_torque);
+  /// @brief A weld joint's stiffness (hertz 0: rigid).
+  /// @throws InvalidArgumentError for other kinds or negative or non-finite values.
+  void set_weld_springs(JointId id, Real linear_hertz, Real linear_damping_ratio,
+                        Real angular_hertz, Real angular_damping_ratio);
+  /// @brief Break thresholds (see JointBase::break_force), +infinity for none.
+  /// @throws InvalidArgumentError for negative or NaN values.
+  void set_joint_break(JointId id, Real force, Real torque);
+
+  /// @}
+
   /// @name Time stepping
   /// @{
 
@@ -277,6 +348,8 @@ class World {
   std::span<const SensorBeginEvent> sensor_begin_events() const noexcept;
   /// @brief Shapes that stopped overlapping a sensor, in (sensor, visitor) slot order.
   std::span<const SensorEndEvent> sensor_end_events() const noexcept;
+  /// @brief Joints whose force or torque exceeded their break thresholds, in joint slot order.
+  std::span<const JointBreakEvent> joint_break_events() const noexcept;
   /// @brief Bodies that moved (were simulated), in body slot order.
   std::span<const BodyMoveEvent> body_move_events() const noexcept;
   /// @brief Pair, contact, island and solver counts.

@@ -21,6 +21,14 @@ struct WorldDef {
   Real contact_hertz = 60;          ///< spring stiffness, cycles per second
   Real contact_damping_ratio = 10;  ///< spring damping ratio (1: critical)
   /// @}
+  /// @name Joint softness
+  /// How rigid joint rows push out their position error: stiffness (capped at a quarter of
+  /// the substep rate, like contacts) and damping ratio. Joint springs and soft welds use
+  /// their own settings.
+  /// @{
+  Real joint_hertz = 60;         ///< cycles per second
+  Real joint_damping_ratio = 2;  ///< 1: critical
+  /// @}
   /// Fastest speed at which overlap is pushed apart, so deep overlap resolves without popping.
   Real contact_push_max_velocity = 3;
   /// Approach speeds below this do not bounce, whatever the restitution.

@@ -1,0 +1,116 @@
+#pragma once
+
+// What every joint kind's solver shares: the joint's bodies as the step sees them, the step's
+// settings, and the small vector helpers the constraint rows are written with. Each kind lives
+// in its own file (revolute_joint.cpp, ...) and implements the same set of functions on its
+// own state struct; joint.cpp dispatches to them.
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+
+#include "contact_solver.hpp"
+#include "mink/engine/debug_draw.hpp"
+#include "mink/engine/joint_def.hpp"
+#include "mink/narrowphase/pose.hpp"
+
+namespace mink::detail {
+
+// One body of a joint at the start of the step.
+struct JointBody {
+  std::int32_t solver = 0;  // index into the solver body array (the still body when not moving)
+  Vec2 center{0, 0};        // centre of mass, world
+  Rotation rotation{};
+  Vec2 local_center{0, 0};  // centre of mass in the body frame
+  Real inv_mass = 0, inv_inertia = 0;
+  Pose pose() const { return {center - rotation.apply(local_center), rotation}; }
+};
+
+// A joint's bodies and the anchors, fixed for the step by prepare (Box2D v3's joint frames):
+// the current anchor offsets and separation are recovered each substep from the bodies'
+// position and rotation change since the step began, without touching the body records.
+struct JointFrame {
+  std::array<JointBody, 4> bodies{};  // A, B; a gear also C and D (the A bodies of its joints)
+  Vec2 anchor_a{0, 0};  // anchor on A from A's centre of mass, world-rotated at step start
+  Vec2 anchor_b{0, 0};
+  Vec2 delta_center{0, 0};  // B's centre minus A's, at step start
+  Real h = 0, inv_h = 0;
+  Softness soft;  // how rigid constraints push out their error (Box2D v3's joint softness)
+  // Step start value of the joint's coordinate, for kinds whose position error needs more than
+  // the anchors (a revolute's unwrapped angle, a gear's two joint coordinates).
+  Real coordinate_a = 0, coordinate_b = 0;
+};
+
+// The joint's state at the end of a step: bodies as they are now (poses and velocities), for
+// coordinates, speeds, drawing and end-of-step bookkeeping.
+struct JointBodyState {
+  Pose pose;
+  Vec2 center{0, 0};
+  Vec2 velocity{0, 0};
+  Real angular_velocity = 0;
+};
+
+// Force and torque a joint put on body B during the last step.
+struct JointReaction {
+  Vec2 force{0, 0};
+  Real torque = 0;
+};
+
+inline Real cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+// w x r for a scalar angular velocity w.
+inline Vec2 cross(Real w, const Vec2& r) {
+  return {-w * r.y(), w * r.x()};
+}
+inline Vec2 left_perp(const Vec2& v) {
+  return {-v.y(), v.x()};
+}
+
+inline Vec2 velocity_of(const SolverBody& b) {
+  return {b.vx, b.vy};
+}
+inline Vec2 delta_position(const SolverBody& b) {
+  return {b.dpx, b.dpy};
+}
+inline Rotation delta_rotation(const SolverBody& b) {
+  return {b.qc, b.qs};
+}
+// The body's rotation since the step began, as an angle (substeps turn at most an eighth of a
+// turn each, so a step's turn stays well inside (-pi, pi) for the substep counts used).
+inline Real delta_angle(const SolverBody& b) {
+  return std::atan2(b.qs, b.qc);
+}
+
+// Applies impulse `p` at offset `r` (and angular impulse `l`) to B and the opposite to A.
+inline void apply_pair(SolverBody& a, SolverBody& b, const JointFrame& f, const Vec2& ra,
+                       const Vec2& rb, const Vec2& p, Real l) {
+  const JointBody& ja = f.bodies[0];
+  const JointBody& jb = f.bodies[1];
+  a.vx -= ja.inv_mass * p.x();
+  a.vy -= ja.inv_mass * p.y();
+  a.w -= ja.inv_inertia * (cross(ra, p) + l);
+  b.vx += jb.inv_mass * p.x();
+  b.vy += jb.inv_mass * p.y();
+  b.w += jb.inv_inertia * (cross(rb, p) + l);
+}
+
+// An angle in (-pi, pi].
+inline Real wrap_angle(Real a) {
+  constexpr Real two_pi = 2 * std::numbers::pi;
+  a = std::remainder(a, two_pi);
+  return a <= -std::numbers::pi ? a + two_pi : a;
+}
+
+// B's rotation relative to A as an angle in (-pi, pi].
+inline Real relative_angle(const Rotation& a, const Rotation& b) {
+  return std::atan2(a.cos * b.sin - a.sin * b.cos, a.cos * b.cos + a.sin * b.sin);
+}
+
+// Joint colours for drawing.
+inline constexpr Color kJointColor{0.5f, 0.8f, 0.8f, 1.0f};
+inline constexpr Color kJointAxisColor{0.9f, 0.6f, 0.2f, 1.0f};
+inline constexpr Color kJointLimitColor{0.9f, 0.3f, 0.3f, 1.0f};
+
+}  // namespace mink::detail

@@ -1,0 +1,210 @@
+// The joint rows: see joint_rows.hpp.
+
+#include "joint_rows.hpp"
+
+#include <algorithm>
+
+namespace mink::detail {
+
+namespace {
+
+// Bias and softness of a rigid row with position error `error`.
+Softness rigid_row(const JointFrame& frame, Real error, bool use_bias, Real& bias) {
+  if (!use_bias) {
+    bias = 0;
+    return {0, 1, 0};
+  }
+  bias = frame.soft.bias_rate * error;
+  return frame.soft;
+}
+
+// A one-sided row (a limit): speculative while apart (error > 0), rigid once reached.
+Softness limit_row(const JointFrame& frame, Real error, bool use_bias, Real& bias) {
+  if (error > 0) {
+    bias = error * frame.inv_h;
+    return {0, 1, 0};
+  }
+  return rigid_row(frame, error, use_bias, bias);
+}
+
+void apply_angular(SolverBody& a, SolverBody& b, const JointFrame& frame, Real impulse) {
+  a.w -= frame.bodies[0].inv_inertia * impulse;
+  b.w += frame.bodies[1].inv_inertia * impulse;
+}
+
+}  // namespace
+
+void set_anchors(JointFrame& frame, const Vec2& local_anchor_a, const Vec2& local_anchor_b) {
+  const JointBody& a = frame.bodies[0];
+  const JointBody& b = frame.bodies[1];
+  frame.anchor_a = a.rotation.apply(local_anchor_a - a.local_center);
+  frame.anchor_b = b.rotation.apply(local_anchor_b - b.local_center);
+  frame.delta_center = b.center - a.center;
+}
+
+CurrentAnchors current_anchors(const JointFrame& frame, const SolverBody& a, const SolverBody& b) {
+  CurrentAnchors c;
+  c.ra = delta_rotation(a).apply(frame.anchor_a);
+  c.rb = delta_rotation(b).apply(frame.anchor_b);
+  c.separation = (delta_position(b) - delta_position(a)) + frame.delta_center + (c.rb - c.ra);
+  return c;
+}
+
+void solve_point(SolverBody& a, SolverBody& b, const JointFrame& frame, bool use_bias,
+                 Vec2& impulse) {
+  const CurrentAnchors c = current_anchors(frame, a, b);
+  const Vec2 cdot =
+      (velocity_of(b) + cross(b.w, c.rb)) - (velocity_of(a) + cross(a.w, c.ra));
+  Vec2 bias{0, 0};
+  Real mass_scale = 1, impulse_scale = 0;
+  if (use_bias) {
+    bias = frame.soft.bias_rate * c.separation;
+    mass_scale = frame.soft.mass_scale;
+    impulse_scale = frame.soft.impulse_scale;
+  }
+  const Real ma = frame.bodies[0].inv_mass, mb = frame.bodies[1].inv_mass;
+  const Real ia = frame.bodies[0].inv_inertia, ib = frame.bodies[1].inv_inertia;
+  const Real k11 = ma + mb + c.ra.y() * c.ra.y() * ia + c.rb.y() * c.rb.y() * ib;
+  const Real k12 = -c.ra.y() * c.ra.x() * ia - c.rb.y() * c.rb.x() * ib;
+  const Real k22 = ma + mb + c.ra.x() * c.ra.x() * ia + c.rb.x() * c.rb.x() * ib;
+  Real det = k11 * k22 - k12 * k12;
+  if (det != 0) det = 1 / det;
+  const Vec2 rhs = cdot + bias;
+  const Vec2 solved(det * (k22 * rhs.x() - k12 * rhs.y()), det * (k11 * rhs.y() - k12 * rhs.x()));
+  const Vec2 p = -mass_scale * solved - impulse_scale * impulse;
+  impulse += p;
+  apply_pair(a, b, frame, c.ra, c.rb, p, 0);
+}
+
+void solve_angle(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
+                 Real error, bool use_bias, Real& impulse) {
+  Real bias = 0;
+  const Softness s = rigid_row(frame, error, use_bias, bias);
+  const Real cdot = b.w - a.w;
+  const Real p = -s.mass_scale * axial_mass * (cdot + bias) - s.impulse_scale * impulse;
+  impulse += p;
+  apply_angular(a, b, frame, p);
+}
+
+void solve_angular_spring(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
+                          const Softness& spring, Real error, Real& impulse) {
+  const Real cdot = b.w - a.w;
+  const Real bias = spring.bias_rate * error;
+  const Real p = -spring.mass_scale * axial_mass * (cdot + bias) - spring.impulse_scale * impulse;
+  impulse += p;
+  apply_angular(a, b, frame, p);
+}
+
+void solve_angular_motor(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
+                         const JointMotor& motor, Real& impulse) {
+  const Real cdot = b.w - a.w - motor.speed;
+  const Real max_impulse = frame.h * motor.max_force;
+  const Real old = impulse;
+  impulse = std::clamp(old - axial_mass * cdot, -max_impulse, max_impulse);
+  apply_angular(a, b, frame, impulse - old);
+}
+
+void solve_angular_limits(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
+                          Real angle, const JointLimit& limit, bool use_bias, Real& lower_impulse,
+                          Real& upper_impulse) {
+  {
+    Real bias = 0;
+    const Softness s = limit_row(frame, angle - limit.lower, use_bias, bias);
+    const Real cdot = b.w - a.w;
+    const Real p = -s.mass_scale * axial_mass * (cdot + bias) - s.impulse_scale * lower_impulse;
+    const Real total = std::max<Real>(lower_impulse + p, 0);
+    apply_angular(a, b, frame, total - lower_impulse);
+    lower_impulse = total;
+  }
+  {
+    Real bias = 0;
+    const Softness s = limit_row(frame, limit.upper - angle, use_bias, bias);
+    const Real cdot = a.w - b.w;
+    const Real p = -s.mass_scale * axial_mass * (cdot + bias) - s.impulse_scale * upper_impulse;
+    const Real total = std::max<Real>(upper_impulse + p, 0);
+    apply_angular(a, b, frame, -(total - upper_impulse));
+    upper_impulse = total;
+  }
+}
+
+AxialRow make_axial_row(const JointFrame& frame, const CurrentAnchors& anchors, const Vec2& axis) {
+  AxialRow row;
+  row.axis = axis;
+  row.a1 = cross(anchors.separation + anchors.ra, axis);
+  row.a2 = cross(anchors.rb, axis);
+  const Real k = frame.bodies[0].inv_mass + frame.bodies[1].inv_mass +
+                 frame.bodies[0].inv_inertia * row.a1 * row.a1 +
+                 frame.bodies[1].inv_inertia * row.a2 * row.a2;
+  row.mass = k > 0 ? 1 / k : 0;
+  return row;
+}
+
+Real axial_velocity(const AxialRow& row, const SolverBody& a, const SolverBody& b) {
+  return row.axis.dot(velocity_of(b) - velocity_of(a)) + row.a2 * b.w - row.a1 * a.w;
+}
+
+void apply_axial(const AxialRow& row, const JointFrame& frame, SolverBody& a, SolverBody& b,
+                 Real impulse) {
+  const JointBody& ja = frame.bodies[0];
+  const JointBody& jb = frame.bodies[1];
+  const Vec2 p = impulse * row.axis;
+  a.vx -= ja.inv_mass * p.x();
+  a.vy -= ja.inv_mass * p.y();
+  a.w -= ja.inv_inertia * impulse * row.a1;
+  b.vx += jb.inv_mass * p.x();
+  b.vy += jb.inv_mass * p.y();
+  b.w += jb.inv_inertia * impulse * row.a2;
+}
+
+void solve_axial(const AxialRow& row, const JointFrame& frame, SolverBody& a, SolverBody& b,
+                 Real error, bool use_bias, Real& impulse) {
+  Real bias = 0;
+  const Softness s = rigid_row(frame, error, use_bias, bias);
+  const Real cdot = axial_velocity(row, a, b);
+  const Real p = -s.mass_scale * row.mass * (cdot + bias) - s.impulse_scale * impulse;
+  impulse += p;
+  apply_axial(row, frame, a, b, p);
+}
+
+void solve_axial_spring(const AxialRow& row, const JointFrame& frame, SolverBody& a,
+                        SolverBody& b, const Softness& spring, Real error, Real& impulse) {
+  const Real cdot = axial_velocity(row, a, b);
+  const Real bias = spring.bias_rate * error;
+  const Real p = -spring.mass_scale * row.mass * (cdot + bias) - spring.impulse_scale * impulse;
+  impulse += p;
+  apply_axial(row, frame, a, b, p);
+}
+
+void solve_axial_motor(const AxialRow& row, const JointFrame& frame, SolverBody& a, SolverBody& b,
+                       const JointMotor& motor, Real& impulse) {
+  const Real cdot = axial_velocity(row, a, b) - motor.speed;
+  const Real max_impulse = frame.h * motor.max_force;
+  const Real old = impulse;
+  impulse = std::clamp(old - row.mass * cdot, -max_impulse, max_impulse);
+  apply_axial(row, frame, a, b, impulse - old);
+}
+
+void solve_axial_limits(const AxialRow& row, const JointFrame& frame, SolverBody& a,
+                        SolverBody& b, Real translation, const JointLimit& limit, bool use_bias,
+                        Real& lower_impulse, Real& upper_impulse) {
+  {
+    Real bias = 0;
+    const Softness s = limit_row(frame, translation - limit.lower, use_bias, bias);
+    const Real cdot = axial_velocity(row, a, b);
+    const Real p = -s.mass_scale * row.mass * (cdot + bias) - s.impulse_scale * lower_impulse;
+    const Real total = std::max<Real>(lower_impulse + p, 0);
+    apply_axial(row, frame, a, b, total - lower_impulse);
+    lower_impulse = total;
+  }
+  {
+    Real bias = 0;
+    const Softness s = limit_row(frame, limit.upper - translation, use_bias, bias);
+    const Real cdot = -axial_velocity(row, a, b);
+    const Real p = -s.mass_scale * row.mass * (cdot + bias) - s.impulse_scale * upper_impulse;
+    const Real total = std::max<Real>(upper_impulse + p, 0);
+    apply_axial(row, frame, a, b, -(total - upper_impulse));
+    upper_impulse = total;
+  }
+}
+
+}  // namespace mink::detail

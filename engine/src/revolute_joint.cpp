@@ -1,0 +1,90 @@
+// Revolute joint: B's anchor held on A's anchor; the relative angle free, or sprung, driven
+// or bounded. Rows in the soft step's form: rigid rows push their error out through the
+// joint softness only in the biased pass, limits are speculative while not reached.
+
+#include "revolute_joint.hpp"
+
+#include <algorithm>
+#include <numbers>
+
+#include "joint_rows.hpp"
+
+namespace mink::detail {
+
+void prepare(RevoluteJoint& joint, JointFrame& frame) {
+  set_anchors(frame, joint.def.local_anchor_a, joint.def.local_anchor_b);
+  const Real k = frame.bodies[0].inv_inertia + frame.bodies[1].inv_inertia;
+  joint.axial_mass = k > 0 ? 1 / k : 0;
+  joint.spring_soft = make_softness(joint.def.spring.hertz, joint.def.spring.damping_ratio, frame.h);
+  frame.coordinate_a = joint.angle;
+}
+
+void warm_start(const RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies) {
+  SolverBody& a = bodies[frame.bodies[0].solver];
+  SolverBody& b = bodies[frame.bodies[1].solver];
+  const Vec2 ra = delta_rotation(a).apply(frame.anchor_a);
+  const Vec2 rb = delta_rotation(b).apply(frame.anchor_b);
+  const Real axial =
+      joint.spring_impulse + joint.motor_impulse + joint.lower_impulse - joint.upper_impulse;
+  apply_pair(a, b, frame, ra, rb, joint.linear_impulse, axial);
+}
+
+void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias) {
+  SolverBody& a = bodies[frame.bodies[0].solver];
+  SolverBody& b = bodies[frame.bodies[1].solver];
+  const RevoluteJointDef& def = joint.def;
+  const bool turns = joint.axial_mass > 0;
+  const Real angle = frame.coordinate_a + (delta_angle(b) - delta_angle(a));
+  if (def.spring.enabled && turns) {
+    solve_angular_spring(a, b, frame, joint.axial_mass, joint.spring_soft,
+                         angle - def.spring.target, joint.spring_impulse);
+  }
+  if (def.motor.enabled && turns) {
+    solve_angular_motor(a, b, frame, joint.axial_mass, def.motor, joint.motor_impulse);
+  }
+  if (def.limit.enabled && turns) {
+    solve_angular_limits(a, b, frame, joint.axial_mass, angle, def.limit, use_bias,
+                         joint.lower_impulse, joint.upper_impulse);
+  }
+  solve_point(a, b, frame, use_bias, joint.linear_impulse);
+}
+
+JointReaction reaction(const RevoluteJoint& joint, const JointFrame& frame) {
+  const Real axial =
+      joint.spring_impulse + joint.motor_impulse + joint.lower_impulse - joint.upper_impulse;
+  return {frame.inv_h * joint.linear_impulse, frame.inv_h * axial};
+}
+
+Real coordinate(const RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b) {
+  const Real now = relative_angle(a.pose.rotation, b.pose.rotation) - joint.def.reference_angle;
+  return joint.angle + wrap_angle(now - joint.angle);
+}
+
+void finish(RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b) {
+  joint.angle = coordinate(joint, a, b);
+}
+
+Real speed(const RevoluteJoint&, const JointBodyState& a, const JointBodyState& b) {
+  return b.angular_velocity - a.angular_velocity;
+}
+
+void draw(const RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b,
+          DebugDraw& draw) {
+  const Vec2 pa = a.pose.apply(joint.def.local_anchor_a);
+  const Vec2 pb = b.pose.apply(joint.def.local_anchor_b);
+  draw.draw_segment(a.center, pa, kJointColor);
+  draw.draw_segment(b.center, pb, kJointColor);
+  draw.draw_point(pa, 5, kJointColor);
+  draw.draw_point(pb, 5, kJointColor);
+  if (joint.def.limit.enabled) {
+    // The limits as two rays from the anchor, in A's frame at the reference angle.
+    const Real base = a.pose.rotation.angle() + joint.def.reference_angle;
+    const Real length = std::max<Real>(0.25, (b.center - pb).norm());
+    for (const Real limit : {joint.def.limit.lower, joint.def.limit.upper}) {
+      const Rotation r = Rotation::from_angle(base + limit);
+      draw.draw_segment(pa, pa + r.apply(Vec2(length, 0)), kJointLimitColor);
+    }
+  }
+}
+
+}  // namespace mink::detail

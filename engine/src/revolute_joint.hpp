@@ -1,0 +1,31 @@
+#pragma once
+
+#include "joint_common.hpp"
+
+namespace mink::detail {
+
+// A revolute joint: a point constraint, plus on the relative angle a spring, a motor and
+// limits, each its own row solved in that order (the point last, as it matters most).
+struct RevoluteJoint {
+  RevoluteJointDef def;
+  // Accumulated impulses, kept between steps for warm starting.
+  Vec2 linear_impulse{0, 0};
+  Real spring_impulse = 0, motor_impulse = 0, lower_impulse = 0, upper_impulse = 0;
+  Real angle = 0;  // the joint angle at the end of the last step, counted through full turns
+  // Prepared for the step.
+  Real axial_mass = 0;
+  Softness spring_soft;
+};
+
+// The functions every joint kind implements (see joint.cpp for when each runs).
+void prepare(RevoluteJoint& joint, JointFrame& frame);
+void warm_start(const RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies);
+void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias);
+JointReaction reaction(const RevoluteJoint& joint, const JointFrame& frame);
+void finish(RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b);
+Real coordinate(const RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b);
+Real speed(const RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b);
+void draw(const RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b,
+          DebugDraw& draw);
+
+}  // namespace mink::detail
