@@ -181,7 +181,9 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
       });
     }
     scalar_pass([&](ContactConstraint& c) { warm_start_one(body_data, c); });
-    if (joints) joints->solve(body_data, true);
+    if (joints) {
+      for (int i = 0; i < settings.joint_iterations; ++i) joints->solve(body_data, true);
+    }
     if (wide_mode_) {
       wide_pass([&](WideConstraint* b, WideConstraint* e, WideMaxImpulse* m) {
         solve_wide(body_data, b, e, m, inv_h, max_push, true);

@@ -64,6 +64,7 @@ struct SolverSettings {
   Real contact_push_max_velocity = 0;
   Real restitution_threshold = 0;
   int substeps = 1;
+  int joint_iterations = 1;
 };
 
 // Four constraints side by side, one per lane, for the wide (SIMD) path.

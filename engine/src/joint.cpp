@@ -44,7 +44,8 @@ class DefCheck {
             what_ + "." + field + " must be positive and finite, got " + std::to_string(v));
   }
   void unit(const Vec2& v, const char* field) const {
-    require(finite(v) && std::abs(v.norm() - 1) < 1e-6, what_ + "." + field + " must be a unit vector");
+    require(finite(v) && std::abs(v.norm() - 1) < 1e-6,
+            what_ + "." + field + " must be a unit vector");
   }
   void motor(const JointMotor& m) const {
     finite_value(m.speed, "motor.speed");
@@ -121,9 +122,9 @@ void check_def(const DefCheck& c, const MotorJointDef& d) {
   c.finite_value(d.angular_offset, "angular_offset");
   c.non_negative(d.max_force, "max_force");
   c.non_negative(d.max_torque, "max_torque");
-  require(std::isfinite(d.correction_factor) && d.correction_factor >= 0 &&
-              d.correction_factor <= 1,
-          c.what() + ".correction_factor must be in [0, 1]");
+  require(
+      std::isfinite(d.correction_factor) && d.correction_factor >= 0 && d.correction_factor <= 1,
+      c.what() + ".correction_factor must be in [0, 1]");
 }
 void check_def(const DefCheck& c, const GearJointDef& d) {
   require(std::isfinite(d.ratio) && d.ratio != 0, c.what() + ".ratio must be finite and non-zero");
@@ -278,7 +279,8 @@ void WorldState::recolor_joint(std::uint32_t index) {
 bool WorldState::joint_prevents_contact(std::uint32_t body_a, std::uint32_t body_b) const {
   const Body& a = bodies[body_a];
   const Body& b = bodies[body_b];
-  const std::vector<std::uint32_t>& fewer = a.joints.size() <= b.joints.size() ? a.joints : b.joints;
+  const std::vector<std::uint32_t>& fewer =
+      a.joints.size() <= b.joints.size() ? a.joints : b.joints;
   for (const std::uint32_t j : fewer) {
     const Joint& joint = joints[j];
     if (joint.body_count != 2 || base(joint).collide_connected) continue;
@@ -391,17 +393,22 @@ template <typename Part, typename Get>
 Part& part_of(Joint& joint, JointId id, const char* what, Get get) {
   Part* part = std::visit([&](auto& k) -> Part* { return get(k.def); }, joint.kind);
   require(part != nullptr, std::string(what) + " of " + to_string(id) + ": a " +
-                               std::string(to_string(detail::type_of(joint))) +
-                               " joint has none");
+                               std::string(to_string(detail::type_of(joint))) + " joint has none");
   return *part;
 }
 
 template <typename Def>
-concept HasMotor = requires(Def d) { d.motor; };
+concept HasMotor = requires(Def d) {
+  d.motor;
+};
 template <typename Def>
-concept HasSpring = requires(Def d) { d.spring; };
+concept HasSpring = requires(Def d) {
+  d.spring;
+};
 template <typename Def>
-concept HasLimit = requires(Def d) { d.limit; };
+concept HasLimit = requires(Def d) {
+  d.limit;
+};
 
 JointMotor& motor_of(Joint& joint, JointId id, const char* what) {
   return part_of<JointMotor>(joint, id, what, [](auto& d) -> JointMotor* {

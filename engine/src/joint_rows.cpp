@@ -53,8 +53,7 @@ CurrentAnchors current_anchors(const JointFrame& frame, const SolverBody& a, con
 void solve_point(SolverBody& a, SolverBody& b, const JointFrame& frame, bool use_bias,
                  Vec2& impulse) {
   const CurrentAnchors c = current_anchors(frame, a, b);
-  const Vec2 cdot =
-      (velocity_of(b) + cross(b.w, c.rb)) - (velocity_of(a) + cross(a.w, c.ra));
+  const Vec2 cdot = (velocity_of(b) + cross(b.w, c.rb)) - (velocity_of(a) + cross(a.w, c.ra));
   Vec2 bias{0, 0};
   Real mass_scale = 1, impulse_scale = 0;
   if (use_bias) {
@@ -76,8 +75,8 @@ void solve_point(SolverBody& a, SolverBody& b, const JointFrame& frame, bool use
   apply_pair(a, b, frame, c.ra, c.rb, p, 0);
 }
 
-void solve_angle(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
-                 Real error, bool use_bias, Real& impulse) {
+void solve_angle(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass, Real error,
+                 bool use_bias, Real& impulse) {
   Real bias = 0;
   const Softness s = rigid_row(frame, error, use_bias, bias);
   const Real cdot = b.w - a.w;
@@ -166,8 +165,8 @@ void solve_axial(const AxialRow& row, const JointFrame& frame, SolverBody& a, So
   apply_axial(row, frame, a, b, p);
 }
 
-void solve_axial_spring(const AxialRow& row, const JointFrame& frame, SolverBody& a,
-                        SolverBody& b, const Softness& spring, Real error, Real& impulse) {
+void solve_axial_spring(const AxialRow& row, const JointFrame& frame, SolverBody& a, SolverBody& b,
+                        const Softness& spring, Real error, Real& impulse) {
   const Real cdot = axial_velocity(row, a, b);
   const Real bias = spring.bias_rate * error;
   const Real p = -spring.mass_scale * row.mass * (cdot + bias) - spring.impulse_scale * impulse;
@@ -184,8 +183,8 @@ void solve_axial_motor(const AxialRow& row, const JointFrame& frame, SolverBody&
   apply_axial(row, frame, a, b, impulse - old);
 }
 
-void solve_axial_limits(const AxialRow& row, const JointFrame& frame, SolverBody& a,
-                        SolverBody& b, Real translation, const JointLimit& limit, bool use_bias,
+void solve_axial_limits(const AxialRow& row, const JointFrame& frame, SolverBody& a, SolverBody& b,
+                        Real translation, const JointLimit& limit, bool use_bias,
                         Real& lower_impulse, Real& upper_impulse) {
   {
     Real bias = 0;

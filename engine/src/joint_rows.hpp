@@ -25,8 +25,8 @@ void solve_point(SolverBody& a, SolverBody& b, const JointFrame& frame, bool use
                  Vec2& impulse);
 
 // Rows on the relative angle (B minus A); `axial_mass` is 1 / (iA + iB).
-void solve_angle(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
-                 Real error, bool use_bias, Real& impulse);
+void solve_angle(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass, Real error,
+                 bool use_bias, Real& impulse);
 void solve_angular_spring(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
                           const Softness& spring, Real error, Real& impulse);
 void solve_angular_motor(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
@@ -48,12 +48,12 @@ void apply_axial(const AxialRow& row, const JointFrame& frame, SolverBody& a, So
                  Real impulse);
 void solve_axial(const AxialRow& row, const JointFrame& frame, SolverBody& a, SolverBody& b,
                  Real error, bool use_bias, Real& impulse);
-void solve_axial_spring(const AxialRow& row, const JointFrame& frame, SolverBody& a,
-                        SolverBody& b, const Softness& spring, Real error, Real& impulse);
+void solve_axial_spring(const AxialRow& row, const JointFrame& frame, SolverBody& a, SolverBody& b,
+                        const Softness& spring, Real error, Real& impulse);
 void solve_axial_motor(const AxialRow& row, const JointFrame& frame, SolverBody& a, SolverBody& b,
                        const JointMotor& motor, Real& impulse);
-void solve_axial_limits(const AxialRow& row, const JointFrame& frame, SolverBody& a,
-                        SolverBody& b, Real translation, const JointLimit& limit, bool use_bias,
+void solve_axial_limits(const AxialRow& row, const JointFrame& frame, SolverBody& a, SolverBody& b,
+                        Real translation, const JointLimit& limit, bool use_bias,
                         Real& lower_impulse, Real& upper_impulse);
 
 }  // namespace mink::detail

@@ -27,6 +27,8 @@ void JointStages::solve(SolverBody* bodies, bool use_bias) {
     Joint& joint = (*joints_)[j];
     std::visit([&](auto& k) { detail::solve(k, joint.frame, bodies, use_bias); }, joint.kind);
   }
+  // The chains' point rows last, as they matter most (as in each revolute's own solve).
+  chains_.solve(*joints_, bodies, use_bias);
 }
 
 }  // namespace detail
@@ -91,6 +93,10 @@ void WorldState::prepare_joints() {
     std::visit([&](auto& k) { detail::prepare(k, frame); }, joint.kind);
   }
   joint_stages.set(&joints, &step_joints);
+  if (def.direct_joint_chains)
+    joint_stages.chains().build(joints, step_joints);
+  else
+    joint_stages.chains().build(joints, {});
 }
 
 void WorldState::finish_joints() {

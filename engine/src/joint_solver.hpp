@@ -6,6 +6,7 @@
 #include "contact_solver.hpp"
 #include "id_pool.hpp"
 #include "joint.hpp"
+#include "joint_chain_solver.hpp"
 
 namespace mink::detail {
 
@@ -20,8 +21,10 @@ class JointStages {
   bool empty() const { return order_ == nullptr || order_->empty(); }
   void warm_start(SolverBody* bodies);
   void solve(SolverBody* bodies, bool use_bias);
+  JointChainSolver& chains() { return chains_; }
 
  private:
+  JointChainSolver chains_;
   IdPool<Joint>* joints_ = nullptr;
   const std::vector<std::uint32_t>* order_ = nullptr;
 };

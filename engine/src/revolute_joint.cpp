@@ -15,7 +15,8 @@ void prepare(RevoluteJoint& joint, JointFrame& frame) {
   set_anchors(frame, joint.def.local_anchor_a, joint.def.local_anchor_b);
   const Real k = frame.bodies[0].inv_inertia + frame.bodies[1].inv_inertia;
   joint.axial_mass = k > 0 ? 1 / k : 0;
-  joint.spring_soft = make_softness(joint.def.spring.hertz, joint.def.spring.damping_ratio, frame.h);
+  joint.spring_soft =
+      make_softness(joint.def.spring.hertz, joint.def.spring.damping_ratio, frame.h);
   frame.coordinate_a = joint.angle;
 }
 
@@ -46,7 +47,7 @@ void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bo
     solve_angular_limits(a, b, frame, joint.axial_mass, angle, def.limit, use_bias,
                          joint.lower_impulse, joint.upper_impulse);
   }
-  solve_point(a, b, frame, use_bias, joint.linear_impulse);
+  if (!joint.direct) solve_point(a, b, frame, use_bias, joint.linear_impulse);
 }
 
 JointReaction reaction(const RevoluteJoint& joint, const JointFrame& frame) {

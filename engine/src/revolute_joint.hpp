@@ -11,7 +11,8 @@ struct RevoluteJoint {
   // Accumulated impulses, kept between steps for warm starting.
   Vec2 linear_impulse{0, 0};
   Real spring_impulse = 0, motor_impulse = 0, lower_impulse = 0, upper_impulse = 0;
-  Real angle = 0;  // the joint angle at the end of the last step, counted through full turns
+  Real angle = 0;       // the joint angle at the end of the last step, counted through full turns
+  bool direct = false;  // its point row is solved with its chain's (joint_chain_solver.hpp)
   // Prepared for the step.
   Real axial_mass = 0;
   Softness spring_soft;

@@ -168,6 +168,7 @@ void WorldState::solve() {
   settings.contact_push_max_velocity = def.contact_push_max_velocity;
   settings.restitution_threshold = def.restitution_threshold;
   settings.substeps = substeps;
+  settings.joint_iterations = def.joint_iterations;
   contact_solver.solve(solver_bodies, solver_params, settings,
                        joint_stages.empty() ? nullptr : &joint_stages);
 

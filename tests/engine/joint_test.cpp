@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -84,6 +86,203 @@ TEST(Pendulum, ADistanceJointSwingsWithTheSimplePendulumPeriod) {
   const Real expected = 2 * std::numbers::pi * std::sqrt(length / kGravity);
   EXPECT_NEAR(period, expected, 0.01 * expected);
   RecordProperty("period", std::to_string(period));
+}
+
+}  // namespace
+}  // namespace mink
+
+namespace mink {
+namespace {
+
+// A disk pinned at its centre, driven by a revolute motor against a steady opposing torque.
+struct MotorRig {
+  World world{free_world()};
+  BodyId disk;
+  JointId joint;
+  MotorRig(Real speed, Real max_torque) {
+    const BodyId ground = world.create_body({});
+    disk = add_ball(world, Vec2(0, 5), 0.5);
+    RevoluteJointDef def = revolute_joint_at(world, ground, disk, Vec2(0, 5));
+    def.motor = {true, speed, max_torque};
+    joint = world.create_joint(def);
+  }
+  void run(Real seconds, Real load) {
+    const int steps = static_cast<int>(seconds / world.def().time_step);
+    for (int i = 0; i < steps; ++i) {
+      world.apply_torque(disk, -load);
+      world.step();
+    }
+  }
+};
+
+TEST(RevoluteMotor, ReachesItsSpeedAndHoldsItUnderALoadBelowItsMaxTorque) {
+  MotorRig rig(3, 10);
+  rig.run(1, 0);
+  EXPECT_NEAR(rig.world.joint_speed(rig.joint), 3, 0.03);
+  rig.run(2, 8);  // 80% of the motor's torque
+  EXPECT_NEAR(rig.world.joint_speed(rig.joint), 3, 0.03);
+  // The motor's torque balances the load.
+  EXPECT_NEAR(rig.world.joint_torque(rig.joint), 8, 0.08);
+}
+
+TEST(RevoluteMotor, StallsUnderALoadAboveItsMaxTorque) {
+  MotorRig rig(3, 10);
+  rig.run(1, 0);
+  rig.run(2, 12);  // the net torque 10 - 12 turns the disk backwards
+  const Real inertia = rig.world.rotational_inertia(rig.disk);
+  // Decelerating at (12 - 10) / I from 3 rad/s for 2 s.
+  const Real expected = 3 - 2 * (12 - 10) / inertia;
+  EXPECT_LT(rig.world.joint_speed(rig.joint), 0);
+  EXPECT_NEAR(rig.world.joint_speed(rig.joint), expected, 0.02 * std::abs(expected));
+  EXPECT_NEAR(rig.world.joint_torque(rig.joint), 10, 1e-9);
+}
+
+TEST(Rope, ADistanceJointWithAMaxLengthNeverStretchesBeyondTheLinearSlop) {
+  World world(free_world());
+  const BodyId ground = world.create_body({});
+  const Vec2 pivot(0, 10);
+  const Real rope = 3;
+  // Released beside the pivot with the rope slack: it falls, the rope snaps taut, it swings.
+  const BodyId bob = add_ball(world, pivot + Vec2(1.5, 0), 0.1, 5);
+  DistanceJointDef def = distance_joint_at(world, ground, bob, pivot, world.world_center(bob));
+  def.length = rope;
+  def.limit = {true, 0, rope};
+  world.create_joint(def);
+  Real longest = 0, shortest = rope;
+  for (int i = 0; i < 600; ++i) {
+    world.step();
+    const Real length = (world.world_center(bob) - pivot).norm();
+    longest = std::max(longest, length);
+    shortest = std::min(shortest, length);
+  }
+  EXPECT_LE(longest, rope + world.def().linear_slop);
+  EXPECT_GT(longest, rope - 0.01);  // it did go taut
+  EXPECT_LT(shortest, 1.6);         // and was slack at first
+  RecordProperty("longest", std::to_string(longest));
+}
+
+}  // namespace
+}  // namespace mink
+
+namespace mink {
+namespace {
+
+// A chain of `links` capsules (each `link` long, light) pinned at the top to a static body,
+// starting horizontal, with a ball `ratio` times a link's mass hanging from its end.
+// Box2D's own scheme as well, one joint at a time, for comparison.
+WorldDef chain_world(bool direct) {
+  WorldDef def = free_world();
+  def.direct_joint_chains = direct;
+  return def;
+}
+
+Vec2 direction_at(Real degrees) {
+  return {std::cos(degrees * std::numbers::pi / 180), std::sin(degrees * std::numbers::pi / 180)};
+}
+
+struct HangingChain {
+  World world;
+  std::vector<JointId> joints;
+  Real length = 0;
+  // `direction` is the unit vector the chain is laid out along from its pin.
+  HangingChain(int links, Real ratio, const Vec2& direction, bool direct = true, Real link = 0.5)
+      : world(chain_world(direct)) {
+    const BodyId ground = world.create_body({});
+    const Real radius = 0.05;
+    BodyId previous = ground;
+    const Vec2 top(0, 20);
+    const Real angle = std::atan2(direction.y(), direction.x());
+    ShapeDef capsule = ShapeDef::capsule(Vec2(-0.5 * link, 0), Vec2(0.5 * link, 0), radius);
+    for (int i = 0; i < links; ++i) {
+      BodyDef def;
+      def.type = BodyType::dynamic;
+      def.position = top + (i + 0.5) * link * direction;
+      def.angle = angle;
+      const BodyId body = world.create_body(def);
+      world.create_shape(body, capsule);
+      joints.push_back(
+          world.create_joint(revolute_joint_at(world, previous, body, top + i * link * direction)));
+      previous = body;
+    }
+    const Real link_mass = world.mass(previous);
+    BodyDef def;
+    def.type = BodyType::dynamic;
+    def.position = top + (links * link + 0.25) * direction;
+    const BodyId weight = world.create_body(def);
+    ShapeDef ball = ShapeDef::circle(0.25);
+    ball.density = ratio * link_mass / (std::numbers::pi * 0.25 * 0.25);
+    world.create_shape(weight, ball);
+    joints.push_back(world.create_joint(
+        revolute_joint_at(world, previous, weight, top + links * link * direction)));
+    length = links * link;
+  }
+  // How far the joints have come apart, summed: the chain's stretch.
+  Real stretch() const {
+    Real gap = 0;
+    for (const JointId j : joints)
+      gap += (world.joint_anchor_b(j) - world.joint_anchor_a(j)).norm();
+    return gap;
+  }
+  Real run(Real seconds) {
+    Real worst = 0;
+    const int steps = static_cast<int>(seconds / world.def().time_step);
+    for (int i = 0; i < steps; ++i) {
+      world.step();
+      worst = std::max(worst, stretch());
+    }
+    return worst;
+  }
+};
+
+// Laid out horizontally and let fall: the weight swings the chain through its lowest point.
+TEST(MassRatio, AThirtyLinkChainHoldsAHundredTimesALinksMassWithinOnePercent) {
+  HangingChain chain(30, 100, direction_at(0));
+  const Real worst = chain.run(10);
+  std::printf("30 links, 100:1: stretch after 10 s %.4f m, worst %.4f m of %.1f m\n",
+              chain.stretch(), worst, chain.length);
+  EXPECT_LE(chain.stretch(), 0.01 * chain.length);
+  EXPECT_LE(worst, 0.01 * chain.length);
+}
+
+// From 45 degrees below the horizontal (a straight horizontal chain cannot hold a weight at
+// all: the tension it would need grows without bound).
+TEST(MassRatio, ATenLinkChainHoldsAThousandTimesALinksMassWithinFivePercent) {
+  HangingChain chain(10, 1000, direction_at(-45));
+  const Real worst = chain.run(10);
+  std::printf("10 links, 1000:1: stretch after 10 s %.4f m, worst %.4f m of %.1f m\n",
+              chain.stretch(), worst, chain.length);
+  EXPECT_LE(chain.stretch(), 0.05 * chain.length);
+  EXPECT_LE(worst, 0.05 * chain.length);
+}
+
+// The same chains one joint at a time stretch far more: the reason for the direct solve.
+TEST(MassRatio, OneJointAtATimeTheSameChainsStretch) {
+  HangingChain thirty(30, 100, direction_at(0), false);
+  HangingChain ten(10, 1000, direction_at(-45), false);
+  thirty.run(10);
+  ten.run(10);
+  std::printf("one joint at a time: 30 links, 100:1 stretch %.4f m; 10 links, 1000:1 %.4f m\n",
+              thirty.stretch(), ten.stretch());
+  EXPECT_GT(thirty.stretch(), 0.01 * thirty.length);
+  EXPECT_GT(ten.stretch(), 0.05 * ten.length);
+}
+
+// At rest every joint carries the weight of what hangs below it, whichever way it is solved.
+TEST(MassRatio, AHangingChainsJointForcesAreTheWeightBelowThem) {
+  for (const bool direct : {true, false}) {
+    HangingChain chain(8, 20, direction_at(-90), direct);
+    chain.run(3);
+    const std::vector<BodyId> bodies = chain.world.bodies();
+    for (std::size_t k = 0; k < chain.joints.size(); ++k) {
+      Real below = 0;
+      for (std::size_t b = k + 1; b < bodies.size(); ++b) below += chain.world.mass(bodies[b]);
+      const Vec2 force = chain.world.joint_force(chain.joints[k]);
+      // The joint pulls body B (below) up.
+      EXPECT_NEAR(force.y(), kGravity * below, 0.01 * kGravity * below)
+          << "joint " << k << (direct ? " (direct)" : " (one at a time)");
+      EXPECT_NEAR(force.x(), 0, 1e-3 * kGravity * below);
+    }
+  }
 }
 
 }  // namespace

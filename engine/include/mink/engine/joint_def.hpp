@@ -113,7 +113,7 @@ struct WeldJointDef : JointBase {
 struct WheelJointDef : JointBase {
   Vec2 local_anchor_a{0, 0};
   Vec2 local_anchor_b{0, 0};
-  Vec2 local_axis_a{0, 1};  ///< unit suspension axis, in A's frame
+  Vec2 local_axis_a{0, 1};              ///< unit suspension axis, in A's frame
   JointSpring spring{true, 1, 0.7, 0};  ///< suspension along the axis, target a translation
   JointLimit limit;                     ///< suspension travel, metres
   JointMotor motor;                     ///< drives B's spin relative to A; max_force a torque
@@ -122,10 +122,10 @@ struct WheelJointDef : JointBase {
 /// Drives B towards `linear_offset` (its origin in A's frame) and `angular_offset` (its angle
 /// relative to A) with at most `max_force` and `max_torque`; the sandbox drags bodies with it.
 struct MotorJointDef : JointBase {
-  Vec2 linear_offset{0, 0};  ///< B's origin in A's frame, the target
-  Real angular_offset = 0;   ///< B's angle minus A's, the target
-  Real max_force = 1;        ///< N, >= 0
-  Real max_torque = 1;       ///< N m, >= 0
+  Vec2 linear_offset{0, 0};      ///< B's origin in A's frame, the target
+  Real angular_offset = 0;       ///< B's angle minus A's, the target
+  Real max_force = 1;            ///< N, >= 0
+  Real max_torque = 1;           ///< N m, >= 0
   Real correction_factor = 0.3;  ///< fraction of the position error removed per step, [0, 1]
 };
 

@@ -28,6 +28,12 @@ struct WorldDef {
   /// @{
   Real joint_hertz = 60;         ///< cycles per second
   Real joint_damping_ratio = 2;  ///< 1: critical
+  /// Joint passes per substep in the biased solve (contacts get one).
+  int joint_iterations = 1;
+  /// Solve chains of revolute joints (each body in at most two) as one exact linear system
+  /// instead of one joint at a time, so heavy bodies on light chains do not stretch them.
+  /// false: one at a time, as Box2D (the slow twin of the mass-ratio tests).
+  bool direct_joint_chains = true;
   /// @}
   /// Fastest speed at which overlap is pushed apart, so deep overlap resolves without popping.
   Real contact_push_max_velocity = 3;

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "contact_solver.hpp"
+#include "id_pool.hpp"
+#include "joint.hpp"
+
+namespace mink::detail {
+
+// A direct solve for chains of revolute joints. Gauss-Seidel passes one joint at a time
+// and carries a heavy body's weight up a chain of light links only slowly: a heavy weight on
+// a light chain stretches it, the known weakness of sequential impulses. Where the revolute
+// joints form paths (each moving body in at most two of them, no loop), the point rows of a
+// path form a block-tridiagonal system, solved exactly in linear time (block Thomas
+// algorithm) in every solve and relax pass, with the same softness as the one-joint rows.
+// Their other rows (springs, motors, limits) and every other joint stay one at a time.
+class JointChainSolver {
+ public:
+  // Finds the paths among `order`'s revolute joints and marks their joints as solved here.
+  void build(IdPool<Joint>& joints, const std::vector<std::uint32_t>& order);
+  void solve(IdPool<Joint>& joints, SolverBody* bodies, bool use_bias);
+  std::size_t chained_joints() const { return chain_joints_.size(); }
+
+ private:
+  // Per path: [begin, end) into chain_joints_.
+  std::vector<std::uint32_t> path_begin_;
+  std::vector<std::uint32_t> chain_joints_;
+  // Per chained joint: which side (0: A, 1: B) of it the next joint shares a body on, and
+  // which side of the next joint that body is.
+  std::vector<std::uint8_t> next_side_, next_other_side_;
+  // Scratch per chained joint.
+  struct Row {
+    Vec2 ra{0, 0}, rb{0, 0};          // anchors from the centres of mass now
+    Eigen::Matrix2d diagonal, upper;  // K_ii and K_i,i+1
+    Eigen::Matrix2d eliminated;       // the Thomas algorithm's C'_i
+    Vec2 rhs{0, 0};
+  };
+  std::vector<Row> rows_;
+};
+
+}  // namespace mink::detail
