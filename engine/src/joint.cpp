@@ -196,6 +196,17 @@ JointId World::create_joint(const JointDef& def) {
     // The gear acts on its joints' bodies; its definition says so too.
     gear->def.body_a = w.body_id(joint.body[0]);
     gear->def.body_b = w.body_id(joint.body[1]);
+    // It follows its joints' coordinates from their definitions, and holds their sum as now.
+    for (std::size_t g = 0; g < 2; ++g) {
+      const Joint& geared = w.joints[joint.gear_joints[g]];
+      const detail::JointBodyState a = w.joint_body_state(geared.body[0]);
+      const detail::JointBodyState b = w.joint_body_state(geared.body[1]);
+      const Real value =
+          std::visit([&](const auto& k) { return detail::coordinate(k, a, b); }, geared.kind);
+      detail::attach(*gear, g,
+                     std::visit([](const auto& k) -> JointDef { return k.def; }, geared.kind),
+                     value);
+    }
   }
 
   const std::uint32_t index = w.joints.allocate();

@@ -4,8 +4,12 @@
 
 namespace mink::detail {
 
+// A pulley: length_a + ratio * length_b held at its value when made, one rigid row.
 struct PulleyJoint {
   PulleyJointDef def;
+  Real impulse = 0;  // accumulated, kept between steps for warm starting
+  // B's rope direction (ground anchor to body) in the last pass, for the reaction.
+  Vec2 axis_b{0, -1};
 };
 
 void prepare(PulleyJoint& joint, JointFrame& frame);
@@ -15,6 +19,7 @@ JointReaction reaction(const PulleyJoint& joint, const JointFrame& frame);
 void finish(PulleyJoint& joint, const JointBodyState& a, const JointBodyState& b);
 Real coordinate(const PulleyJoint& joint, const JointBodyState& a, const JointBodyState& b);
 Real speed(const PulleyJoint& joint, const JointBodyState& a, const JointBodyState& b);
-void draw(const PulleyJoint& joint, const JointBodyState& a, const JointBodyState& b, DebugDraw& draw);
+void draw(const PulleyJoint& joint, const JointBodyState& a, const JointBodyState& b,
+          DebugDraw& draw);
 
 }  // namespace mink::detail
