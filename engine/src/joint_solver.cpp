@@ -23,12 +23,13 @@ void JointStages::warm_start(SolverBody* bodies) {
 }
 
 void JointStages::solve(SolverBody* bodies, bool use_bias) {
+  // The chains' point rows first: the one-at-a-time rows after them (motors, limits, gears)
+  // then end each pass satisfied, as they would alone.
+  chains_.solve(*joints_, bodies, use_bias);
   for (const std::uint32_t j : *order_) {
     Joint& joint = (*joints_)[j];
     std::visit([&](auto& k) { detail::solve(k, joint.frame, bodies, use_bias); }, joint.kind);
   }
-  // The chains' point rows last, as they matter most (as in each revolute's own solve).
-  chains_.solve(*joints_, bodies, use_bias);
 }
 
 }  // namespace detail
