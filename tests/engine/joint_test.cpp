@@ -6,11 +6,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
 
+#include "mink/engine/stale_id_error.hpp"
 #include "mink/engine/world.hpp"
+#include "mink/error.hpp"
 #include "test_worlds.hpp"
 
 namespace mink {
@@ -283,6 +286,136 @@ TEST(MassRatio, AHangingChainsJointForcesAreTheWeightBelowThem) {
       EXPECT_NEAR(force.x(), 0, 1e-3 * kGravity * below);
     }
   }
+}
+
+}  // namespace
+}  // namespace mink
+
+namespace mink {
+namespace {
+
+TEST(JointLife, DestroyingABodyDestroysItsJointsAndTheirGears) {
+  World world(free_world());
+  const BodyId ground = world.create_body({});
+  const BodyId a = add_ball(world, Vec2(0, 0), 0.5);
+  const BodyId b = add_ball(world, Vec2(2, 0), 0.5);
+  const JointId ja = world.create_joint(revolute_joint_at(world, ground, a, Vec2(0, 0)));
+  const JointId jb = world.create_joint(revolute_joint_at(world, ground, b, Vec2(2, 0)));
+  GearJointDef gear;
+  gear.joint1 = ja;
+  gear.joint2 = jb;
+  const JointId jg = world.create_joint(gear);
+  EXPECT_EQ(world.joint_count(), 3u);
+  EXPECT_EQ(world.body_joints(ground).size(), 3u);  // the gear acts on the ground too
+  world.destroy_body(a);
+  EXPECT_FALSE(world.is_valid(ja));
+  EXPECT_FALSE(world.is_valid(jg));
+  EXPECT_TRUE(world.is_valid(jb));
+  EXPECT_EQ(world.joint_count(), 1u);
+  EXPECT_EQ(world.body_joints(ground), std::vector<JointId>{jb});
+  EXPECT_THROW(world.joint_type(ja), StaleIdError);
+  for (int i = 0; i < 10; ++i) world.step();
+  EXPECT_TRUE(test::finite_state(world, b));
+}
+
+TEST(JointLife, JointedBodiesDoNotCollideUnlessAsked) {
+  for (const bool collide : {false, true}) {
+    World world(free_world());
+    test::add_ground(world);
+    // Two overlapping boxes pinned together at their common centre.
+    const BodyId a = test::add_box(world, Vec2(0, 3));
+    const BodyId b = test::add_box(world, Vec2(0.3, 3));
+    RevoluteJointDef def = revolute_joint_at(world, a, b, Vec2(0.15, 3));
+    def.collide_connected = collide;
+    world.create_joint(def);
+    world.step();
+    bool touching = false;
+    for (const ContactData& c : world.body_contacts(a)) {
+      touching = touching || world.shape_body(c.shape_b) == b || world.shape_body(c.shape_a) == b;
+    }
+    EXPECT_EQ(touching, collide);
+  }
+}
+
+TEST(JointLife, AHangingChainSleepsAndWakesWhenTouched) {
+  World world;  // sleeping on
+  const BodyId ground = world.create_body({});
+  BodyId previous = ground;
+  std::vector<BodyId> links;
+  for (int i = 0; i < 5; ++i) {
+    const BodyId link = add_ball(world, Vec2(0, 10 - 0.5 * (i + 1)), 0.2);
+    world.create_joint(revolute_joint_at(world, previous, link, Vec2(0, 10 - 0.5 * i - 0.25)));
+    links.push_back(link);
+    previous = link;
+  }
+  for (int i = 0; i < 300; ++i) world.step();
+  for (const BodyId link : links) EXPECT_FALSE(world.is_awake(link));
+  // A ball dropped on the last link wakes the whole chain through its joints.
+  const BodyId ball = add_ball(world, Vec2(0, 8), 0.1);
+  bool woke = false;
+  for (int i = 0; i < 60 && !woke; ++i) {
+    world.step();
+    woke = world.is_awake(links.front());
+  }
+  EXPECT_TRUE(woke);
+  EXPECT_TRUE(world.is_awake(ball));
+}
+
+TEST(JointLife, ABreakThresholdReportsAnEventEachStepItIsExceeded) {
+  World world(free_world());
+  const BodyId ground = world.create_body({});
+  const BodyId heavy = add_ball(world, Vec2(0, 5), 0.5, 10);  // about 7.85 kg: 78.5 N
+  RevoluteJointDef def = revolute_joint_at(world, ground, heavy, Vec2(0, 5));
+  def.break_force = 50;
+  def.user_data = 7;
+  const JointId joint = world.create_joint(def);
+  world.step();
+  world.step();
+  ASSERT_EQ(world.joint_break_events().size(), 1u);
+  EXPECT_EQ(world.joint_break_events()[0].joint, joint);
+  EXPECT_EQ(world.joint_break_events()[0].user_data, 7u);
+  EXPECT_NEAR(world.joint_break_events()[0].force.y(), kGravity * world.mass(heavy), 0.5);
+  world.set_joint_break(joint, 100, std::numeric_limits<Real>::infinity());
+  world.step();
+  EXPECT_TRUE(world.joint_break_events().empty());
+  EXPECT_TRUE(world.is_valid(joint));  // reported, not destroyed
+}
+
+TEST(JointErrors, BadDefinitionsAreRefusedNamingTheField) {
+  World world(free_world());
+  const BodyId ground = world.create_body({});
+  const BodyId ball = add_ball(world, Vec2(0, 0), 0.5);
+  const auto message = [&](const JointDef& def) {
+    try {
+      world.create_joint(def);
+    } catch (const InvalidArgumentError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  RevoluteJointDef same = revolute_joint_at(world, ball, ball, Vec2(0, 0));
+  EXPECT_NE(message(same).find("body_a and body_b must differ"), std::string::npos);
+  RevoluteJointDef limits = revolute_joint_at(world, ground, ball, Vec2(0, 0));
+  limits.limit = {true, 1, -1};
+  EXPECT_NE(message(limits).find("revolute joint.limit.lower must not exceed"), std::string::npos);
+  RevoluteJointDef motor = revolute_joint_at(world, ground, ball, Vec2(0, 0));
+  motor.motor = {true, 1, -5};
+  EXPECT_NE(message(motor).find("motor.max_force"), std::string::npos);
+  DistanceJointDef length = distance_joint_at(world, ground, ball, Vec2(0, 1), Vec2(0, 0));
+  length.length = std::nan("");
+  EXPECT_NE(message(length).find("distance joint.length"), std::string::npos);
+  GearJointDef gear;
+  gear.joint1 = world.create_joint(distance_joint_at(world, ground, ball, Vec2(0, 1), Vec2(0, 0)));
+  gear.joint2 = world.create_joint(revolute_joint_at(world, ground, ball, Vec2(0, 0)));
+  EXPECT_NE(message(gear).find("must be revolute or prismatic, got distance"), std::string::npos);
+  // Setters check too, and name the joint.
+  const JointId weld = world.create_joint(weld_joint_at(world, ground, ball, Vec2(0, 0)));
+  EXPECT_THROW(world.set_joint_motor(weld, {true, 1, 1}), InvalidArgumentError);
+  EXPECT_THROW(world.set_joint_limit(gear.joint2, {true, 2, 1}), InvalidArgumentError);
+  // An id from another world is refused.
+  World other(free_world());
+  EXPECT_THROW(other.joint_type(gear.joint2), StaleIdError);
+  EXPECT_EQ(world.joint_count(), 3u);  // nothing half-made
 }
 
 }  // namespace

@@ -40,7 +40,7 @@ struct JointMotor {
 /// given as a frequency so that it does not depend on the masses involved.
 struct JointSpring {
   bool enabled = false;    ///< off: no spring
-  Real hertz = 0;          ///< natural frequency, >= 0 (0 with enabled: damping only)
+  Real hertz = 0;          ///< natural frequency, >= 0 (0: holds the coordinate's speed)
   Real damping_ratio = 0;  ///< 1 is critical; >= 0
   Real target = 0;         ///< rest value of the coordinate (distance: unused, see length)
 };
@@ -71,7 +71,7 @@ struct RevoluteJointDef : JointBase {
   Vec2 local_anchor_a{0, 0};  ///< body-local (about the body origin)
   Vec2 local_anchor_b{0, 0};
   Real reference_angle = 0;  ///< B's angle minus A's at which the joint angle is 0
-  JointLimit limit;          ///< angle bounds, radians, within (-pi, pi)... any, unwrapped
+  JointLimit limit;          ///< angle bounds, radians (the angle counts full turns)
   JointMotor motor;          ///< max_force is a torque
   JointSpring spring;        ///< rotational spring, target an angle
 };
@@ -126,7 +126,8 @@ struct MotorJointDef : JointBase {
   Real angular_offset = 0;       ///< B's angle minus A's, the target
   Real max_force = 1;            ///< N, >= 0
   Real max_torque = 1;           ///< N m, >= 0
-  Real correction_factor = 0.3;  ///< fraction of the position error removed per step, [0, 1]
+  /// Fraction of the position error turned into target speed per substep, [0, 1].
+  Real correction_factor = 0.3;
 };
 
 /// Couples two revolute or prismatic joints: coordinate1 + ratio * coordinate2 stays constant.
