@@ -1,6 +1,7 @@
 // Prismatic, wheel, weld and motor joints against closed-form physics: limits holding a load
 // (and the force and torque they report), motor speeds and stalls (a too-weak motor lets its
-// load fall at g - F/m), spring periods and sags, a cantilever's sag, a motor joint's drag.
+// load fall at g - F/m), spring periods and sags, a cantilever's sag, a motor joint's drag;
+// and motors switched off, which must stop driving (the revolute's too).
 
 #include <gtest/gtest.h>
 
@@ -396,6 +397,36 @@ TEST(MotorJoint, ATinyMaxForceCannotLiftAHeavyBox) {
   EXPECT_LT(world.position(box).y(), 5);
   EXPECT_NEAR(world.linear_velocity(box).y(), expected, 0.01 * std::abs(expected));
   RecordProperty("velocity", std::to_string(world.linear_velocity(box).y()));
+}
+
+// ---- switching parts off ----------------------------------------------------------------------
+
+// A motor switched off stops driving at once: its last impulse must not be warm started on.
+// Without gravity the driven body then keeps the speed it had.
+TEST(JointMotors, AMotorSwitchedOffStopsDriving) {
+  World world(free_world(false));
+  const BodyId ground = world.create_body({});
+  const BodyId spun = add_ball(world, Vec2(0, 0), 0.4);
+  const BodyId slid = test::add_box(world, Vec2(3, 0));
+  const BodyId wheel = add_ball(world, Vec2(6, 0), 0.4);
+  const JointMotor on{true, 10, 0.5}, off{false, 10, 0.5};
+  RevoluteJointDef revolute = revolute_joint_at(world, ground, spun, Vec2(0, 0));
+  revolute.motor = on;
+  PrismaticJointDef prismatic = prismatic_joint_at(world, ground, slid, Vec2(3, 0), Vec2(1, 0));
+  prismatic.motor = on;
+  WheelJointDef wheel_def = wheel_joint_at(world, ground, wheel, Vec2(6, 0), Vec2(0, 1));
+  wheel_def.motor = on;
+  const std::vector<JointId> joints = {world.create_joint(revolute), world.create_joint(prismatic),
+                                       world.create_joint(wheel_def)};
+  step_for(world, 0.2);
+  const std::vector<Real> before = {world.angular_velocity(spun), world.linear_velocity(slid).x(),
+                                    world.angular_velocity(wheel)};
+  for (const Real speed : before) EXPECT_GT(speed, 0.05);  // the motors were driving
+  for (const JointId j : joints) world.set_joint_motor(j, off);
+  step_for(world, 1);
+  EXPECT_NEAR(world.angular_velocity(spun), before[0], 1e-6);
+  EXPECT_NEAR(world.linear_velocity(slid).x(), before[1], 1e-6);
+  EXPECT_NEAR(world.angular_velocity(wheel), before[2], 1e-6);
 }
 
 }  // namespace
