@@ -113,4 +113,36 @@ inline constexpr Color kJointColor{0.5f, 0.8f, 0.8f, 1.0f};
 inline constexpr Color kJointAxisColor{0.9f, 0.6f, 0.2f, 1.0f};
 inline constexpr Color kJointLimitColor{0.9f, 0.3f, 0.3f, 1.0f};
 
+// A slider's translation (prismatic and wheel joints): B's anchor's offset from A's along
+// A's axis; and its rate, which includes the axis turning with A.
+inline Real slider_translation(const JointBodyState& a, const JointBodyState& b,
+                               const Vec2& local_anchor_a, const Vec2& local_anchor_b,
+                               const Vec2& local_axis_a) {
+  const Vec2 d = b.pose.apply(local_anchor_b) - a.pose.apply(local_anchor_a);
+  return a.pose.rotation.apply(local_axis_a).dot(d);
+}
+inline Real slider_speed(const JointBodyState& a, const JointBodyState& b,
+                         const Vec2& local_anchor_a, const Vec2& local_anchor_b,
+                         const Vec2& local_axis_a) {
+  const Vec2 pa = a.pose.apply(local_anchor_a), pb = b.pose.apply(local_anchor_b);
+  const Vec2 axis = a.pose.rotation.apply(local_axis_a);
+  const Vec2 va = a.velocity + cross(a.angular_velocity, Vec2(pa - a.center));
+  const Vec2 vb = b.velocity + cross(b.angular_velocity, Vec2(pb - b.center));
+  return (pb - pa).dot(cross(a.angular_velocity, axis)) + axis.dot(vb - va);
+}
+
+// A slider's axis through A's anchor `pa` (prismatic and wheel joints): the travel between
+// the limits with a tick at each, or a metre either side when it is unbounded.
+inline void draw_axis(DebugDraw& draw, const Vec2& pa, const Vec2& axis, const JointLimit& limit) {
+  if (!limit.enabled) {
+    draw.draw_segment(pa - axis, pa + axis, kJointAxisColor);
+    return;
+  }
+  const Vec2 tick = 0.1 * left_perp(axis);
+  const Vec2 lower = pa + limit.lower * axis, upper = pa + limit.upper * axis;
+  draw.draw_segment(lower, upper, kJointAxisColor);
+  draw.draw_segment(lower - tick, lower + tick, kJointLimitColor);
+  draw.draw_segment(upper - tick, upper + tick, kJointLimitColor);
+}
+
 }  // namespace mink::detail

@@ -75,6 +75,49 @@ void solve_point(SolverBody& a, SolverBody& b, const JointFrame& frame, bool use
   apply_pair(a, b, frame, c.ra, c.rb, p, 0);
 }
 
+namespace {
+
+// B's anchor's velocity relative to A's.
+Vec2 point_velocity(const CurrentAnchors& c, const SolverBody& a, const SolverBody& b) {
+  return (velocity_of(b) + cross(b.w, c.rb)) - (velocity_of(a) + cross(a.w, c.ra));
+}
+
+// The impulse that changes the anchors' relative velocity by `dv`: K^-1 dv, with K the point
+// row's 2x2 effective mass matrix at the current anchors (as in solve_point).
+Vec2 point_impulse(const JointFrame& frame, const CurrentAnchors& c, const Vec2& dv) {
+  const Real ma = frame.bodies[0].inv_mass, mb = frame.bodies[1].inv_mass;
+  const Real ia = frame.bodies[0].inv_inertia, ib = frame.bodies[1].inv_inertia;
+  const Real k11 = ma + mb + c.ra.y() * c.ra.y() * ia + c.rb.y() * c.rb.y() * ib;
+  const Real k12 = -c.ra.y() * c.ra.x() * ia - c.rb.y() * c.rb.x() * ib;
+  const Real k22 = ma + mb + c.ra.x() * c.ra.x() * ia + c.rb.x() * c.rb.x() * ib;
+  Real det = k11 * k22 - k12 * k12;
+  if (det != 0) det = 1 / det;
+  return {det * (k22 * dv.x() - k12 * dv.y()), det * (k11 * dv.y() - k12 * dv.x())};
+}
+
+}  // namespace
+
+void solve_point_spring(SolverBody& a, SolverBody& b, const JointFrame& frame,
+                        const Softness& spring, Vec2& impulse) {
+  const CurrentAnchors c = current_anchors(frame, a, b);
+  const Vec2 rhs = point_velocity(c, a, b) + spring.bias_rate * c.separation;
+  const Vec2 p = -spring.mass_scale * point_impulse(frame, c, rhs) - spring.impulse_scale * impulse;
+  impulse += p;
+  apply_pair(a, b, frame, c.ra, c.rb, p, 0);
+}
+
+void solve_point_motor(SolverBody& a, SolverBody& b, const JointFrame& frame, const Vec2& velocity,
+                       Real max_force, Vec2& impulse) {
+  const CurrentAnchors c = current_anchors(frame, a, b);
+  const Vec2 old = impulse;
+  impulse -= point_impulse(frame, c, point_velocity(c, a, b) - velocity);
+  // Bounded as a vector, so the force keeps its direction when it saturates.
+  const Real max_impulse = frame.h * max_force;
+  const Real length = impulse.norm();
+  if (length > max_impulse) impulse *= max_impulse / length;
+  apply_pair(a, b, frame, c.ra, c.rb, impulse - old, 0);
+}
+
 void solve_angle(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass, Real error,
                  bool use_bias, Real& impulse) {
   Real bias = 0;
@@ -204,6 +247,17 @@ void solve_axial_limits(const AxialRow& row, const JointFrame& frame, SolverBody
     apply_axial(row, frame, a, b, -(total - upper_impulse));
     upper_impulse = total;
   }
+}
+
+SliderRows make_slider_rows(const JointFrame& frame, const SolverBody& a, const SolverBody& b,
+                            const Vec2& axis) {
+  SliderRows s;
+  s.anchors = current_anchors(frame, a, b);
+  s.axis = delta_rotation(a).apply(axis);
+  s.translation = s.axis.dot(s.anchors.separation);
+  s.along = make_axial_row(frame, s.anchors, s.axis);
+  s.across = make_axial_row(frame, s.anchors, left_perp(s.axis));
+  return s;
 }
 
 }  // namespace mink::detail

@@ -24,6 +24,15 @@ CurrentAnchors current_anchors(const JointFrame& frame, const SolverBody& a, con
 void solve_point(SolverBody& a, SolverBody& b, const JointFrame& frame, bool use_bias,
                  Vec2& impulse);
 
+// B's anchor held on A's by a spring (weld springs): soft with `spring` in both passes, as a
+// spring is a force and not an error to push out.
+void solve_point_spring(SolverBody& a, SolverBody& b, const JointFrame& frame,
+                        const Softness& spring, Vec2& impulse);
+// B's anchor driven to `velocity` relative to A's with an accumulated impulse no longer than
+// frame.h * max_force (a two-dimensional motor).
+void solve_point_motor(SolverBody& a, SolverBody& b, const JointFrame& frame, const Vec2& velocity,
+                       Real max_force, Vec2& impulse);
+
 // Rows on the relative angle (B minus A); `axial_mass` is 1 / (iA + iB).
 void solve_angle(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass, Real error,
                  bool use_bias, Real& impulse);
@@ -55,5 +64,16 @@ void solve_axial_motor(const AxialRow& row, const JointFrame& frame, SolverBody&
 void solve_axial_limits(const AxialRow& row, const JointFrame& frame, SolverBody& a, SolverBody& b,
                         Real translation, const JointLimit& limit, bool use_bias,
                         Real& lower_impulse, Real& upper_impulse);
+
+// A slider's rows in the current substep (prismatic and wheel joints): `axis` is the world
+// axis at step start, turned here with A since; the rows act along it and across it.
+struct SliderRows {
+  CurrentAnchors anchors;
+  Vec2 axis{1, 0};
+  Real translation = 0;  // B's anchor's offset from A's along the axis
+  AxialRow along, across;
+};
+SliderRows make_slider_rows(const JointFrame& frame, const SolverBody& a, const SolverBody& b,
+                            const Vec2& axis);
 
 }  // namespace mink::detail

@@ -18,6 +18,10 @@ void prepare(RevoluteJoint& joint, JointFrame& frame) {
   joint.spring_soft =
       make_softness(joint.def.spring.hertz, joint.def.spring.damping_ratio, frame.h);
   frame.coordinate_a = joint.angle;
+  // A part switched off since the last step must not be warm started.
+  if (!joint.def.spring.enabled) joint.spring_impulse = 0;
+  if (!joint.def.motor.enabled) joint.motor_impulse = 0;
+  if (!joint.def.limit.enabled) joint.lower_impulse = joint.upper_impulse = 0;
 }
 
 void warm_start(const RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies) {

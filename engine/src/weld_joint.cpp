@@ -1,14 +1,79 @@
+// Weld joint: B glued to A at an anchor. A part with hertz 0 is rigid and pushes its error
+// out through the joint softness in the biased pass only (solve_point, solve_angle); a part
+// with hertz > 0 is a spring, soft with its own frequency in both passes (it is a force the
+// bodies feel, not an error to remove), as Box2D v3's weld.
+
 #include "weld_joint.hpp"
+
+#include "joint_rows.hpp"
 
 namespace mink::detail {
 
-void prepare(WeldJoint&, JointFrame&) {}
-void warm_start(const WeldJoint&, const JointFrame&, SolverBody*) {}
-void solve(WeldJoint&, const JointFrame&, SolverBody*, bool) {}
-JointReaction reaction(const WeldJoint&, const JointFrame&) { return {}; }
+void prepare(WeldJoint& joint, JointFrame& frame) {
+  const WeldJointDef& def = joint.def;
+  set_anchors(frame, def.local_anchor_a, def.local_anchor_b);
+  const JointBody& a = frame.bodies[0];
+  const JointBody& b = frame.bodies[1];
+  const Real k = a.inv_inertia + b.inv_inertia;
+  joint.axial_mass = k > 0 ? 1 / k : 0;
+  joint.angle_error = wrap_angle(relative_angle(a.rotation, b.rotation) - def.reference_angle);
+  joint.linear_soft = make_softness(def.linear_hertz, def.linear_damping_ratio, frame.h);
+  joint.angular_soft = make_softness(def.angular_hertz, def.angular_damping_ratio, frame.h);
+}
+
+void warm_start(const WeldJoint& joint, const JointFrame& frame, SolverBody* bodies) {
+  SolverBody& a = bodies[frame.bodies[0].solver];
+  SolverBody& b = bodies[frame.bodies[1].solver];
+  const Vec2 ra = delta_rotation(a).apply(frame.anchor_a);
+  const Vec2 rb = delta_rotation(b).apply(frame.anchor_b);
+  apply_pair(a, b, frame, ra, rb, joint.linear_impulse, joint.angular_impulse);
+}
+
+void solve(WeldJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias) {
+  SolverBody& a = bodies[frame.bodies[0].solver];
+  SolverBody& b = bodies[frame.bodies[1].solver];
+  const WeldJointDef& def = joint.def;
+  if (joint.axial_mass > 0) {
+    const Real error = joint.angle_error + (delta_angle(b) - delta_angle(a));
+    if (def.angular_hertz > 0) {
+      solve_angular_spring(a, b, frame, joint.axial_mass, joint.angular_soft, error,
+                           joint.angular_impulse);
+    } else {
+      solve_angle(a, b, frame, joint.axial_mass, error, use_bias, joint.angular_impulse);
+    }
+  }
+  // The point last, as it matters most.
+  if (def.linear_hertz > 0) {
+    solve_point_spring(a, b, frame, joint.linear_soft, joint.linear_impulse);
+  } else {
+    solve_point(a, b, frame, use_bias, joint.linear_impulse);
+  }
+}
+
+JointReaction reaction(const WeldJoint& joint, const JointFrame& frame) {
+  return {frame.inv_h * joint.linear_impulse, frame.inv_h * joint.angular_impulse};
+}
+
 void finish(WeldJoint&, const JointBodyState&, const JointBodyState&) {}
-Real coordinate(const WeldJoint&, const JointBodyState&, const JointBodyState&) { return 0; }
-Real speed(const WeldJoint&, const JointBodyState&, const JointBodyState&) { return 0; }
-void draw(const WeldJoint&, const JointBodyState&, const JointBodyState&, DebugDraw&) {}
+
+// A weld has no free coordinate.
+Real coordinate(const WeldJoint&, const JointBodyState&, const JointBodyState&) {
+  return 0;
+}
+Real speed(const WeldJoint&, const JointBodyState&, const JointBodyState&) {
+  return 0;
+}
+
+void draw(const WeldJoint& joint, const JointBodyState& a, const JointBodyState& b,
+          DebugDraw& draw) {
+  const Vec2 pa = a.pose.apply(joint.def.local_anchor_a);
+  const Vec2 pb = b.pose.apply(joint.def.local_anchor_b);
+  draw.draw_segment(a.center, pa, kJointColor);
+  draw.draw_segment(b.center, pb, kJointColor);
+  // A soft weld's anchors drift apart: the gap shows the spring's stretch.
+  draw.draw_segment(pa, pb, kJointAxisColor);
+  draw.draw_point(pa, 5, kJointColor);
+  draw.draw_point(pb, 5, kJointColor);
+}
 
 }  // namespace mink::detail
