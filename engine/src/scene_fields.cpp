@@ -199,6 +199,15 @@ constexpr SceneField<WorldDef> kWorldFields[] = {
     field<&WorldDef::contact_damping_ratio>("contact_damping_ratio", FieldKind::real,
                                             "contact spring damping ratio (1: critical)",
                                             kNonNegative),
+    field<&WorldDef::joint_hertz>(
+        "joint_hertz", FieldKind::real,
+        "how stiffly rigid joints push out their error, cycles per second", kNonNegative),
+    field<&WorldDef::joint_damping_ratio>("joint_damping_ratio", FieldKind::real,
+                                          "damping of that push-out (1: critical)", kNonNegative),
+    field<&WorldDef::joint_iterations>("joint_iterations", FieldKind::integer,
+                                       "joint passes per substep in the biased solve", {1, 1000}),
+    field<&WorldDef::direct_joint_chains>("direct_joint_chains", FieldKind::boolean,
+                                          "solve chains of revolute joints exactly as one system"),
     field<&WorldDef::contact_push_max_velocity>(
         "contact_push_max_velocity", FieldKind::real,
         "fastest speed (m/s) at which overlap is pushed apart", kNonNegative),

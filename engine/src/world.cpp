@@ -43,6 +43,8 @@ void check_world_def(const WorldDef& def) {
           "WorldDef.joint_hertz must be finite and non-negative");
   require(std::isfinite(def.joint_damping_ratio) && def.joint_damping_ratio >= 0,
           "WorldDef.joint_damping_ratio must be finite and non-negative");
+  require(def.joint_iterations >= 1, "WorldDef.joint_iterations must be at least 1, got " +
+                                         std::to_string(def.joint_iterations));
   require(std::isfinite(def.contact_push_max_velocity) && def.contact_push_max_velocity >= 0,
           "WorldDef.contact_push_max_velocity must be finite and non-negative");
   require(std::isfinite(def.restitution_threshold) && def.restitution_threshold >= 0,
