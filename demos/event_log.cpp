@@ -28,12 +28,13 @@ struct EventLog::Line {
 };
 
 EventLog::EventLog(const std::filesystem::path& path, const World& world,
-                   std::span<const BodyId> bodies)
+                   std::span<const BodyId> bodies, std::span<const JointId> joints)
     : path_(path), out_(open_output_file(path, kWhat)) {
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     body_indices_[key(bodies[i])] = i;
     for (const ShapeId shape : world.body_shapes(bodies[i])) shape_bodies_[key(shape)] = i;
   }
+  for (std::size_t i = 0; i < joints.size(); ++i) joint_indices_[key(joints[i])] = i;
 }
 
 EventLog::~EventLog() = default;
@@ -45,6 +46,7 @@ void EventLog::write_step(const World& world) {
   for (const ContactHitEvent& event : world.contact_hit_events()) hit(world, event);
   for (const SensorBeginEvent& event : world.sensor_begin_events()) sensor_begin(world, event);
   for (const SensorEndEvent& event : world.sensor_end_events()) sensor_end(world, event);
+  for (const JointBreakEvent& event : world.joint_break_events()) joint_break(world, event);
 }
 
 void EventLog::close() {
@@ -82,6 +84,26 @@ void EventLog::hit(const World& world, const ContactHitEvent& event) {
 
 void EventLog::contact_end(const World& world, const ContactEndEvent& event) {
   write_line(pair_line(world, "contact_end", event.shape_a, event.shape_b));
+}
+
+// A joint made during the run has no scene index: the line then names none. The joint is
+// live (breaking does not destroy it), so its bodies are the world's.
+void EventLog::joint_break(const World& world, const JointBreakEvent& event) {
+  Line line;
+  line.json["step"] = step_;
+  line.json["type"] = "joint_break";
+  if (const auto known = joint_indices_.find(key(event.joint)); known != joint_indices_.end()) {
+    line.json["joint"] = known->second;
+  }
+  for (const auto& [name, body] : {std::pair{"body_a", world.joint_body_a(event.joint)},
+                                   std::pair{"body_b", world.joint_body_b(event.joint)}}) {
+    if (const auto index = body_indices_.find(key(body)); index != body_indices_.end()) {
+      line.json[name] = index->second;
+    }
+  }
+  line.json["force"] = xy(event.force);
+  line.json["torque"] = event.torque;
+  write_line(line);
 }
 
 EventLog::Line EventLog::pair_line(const World& world, std::string_view type, ShapeId a,

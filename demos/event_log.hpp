@@ -19,13 +19,17 @@ namespace mink::cli {
 // "contact_begin" (with "normal" [x, y] from A to B, "points" [[x, y], ...] and
 // "separations"), "contact_end", "sensor_begin" and "sensor_end" (shape_a and body_a are the
 // sensor's), and "hit" (with "point", "normal" and "speed", the approach speed in m/s).
+// "joint_break" lines name a joint instead of shapes: "joint" (index into the scene's joints
+// array), its "body_a" and "body_b", "force" [x, y] (N, on body B) and "torque" (N m).
 //
 // Each event type has its own member function filling one line: pair_line() with its shapes,
 // its own fields, write_line().
 class EventLog {
  public:
-  // `bodies[i]` is body i of the scene. Throws OutputError when `path` cannot be written.
-  EventLog(const std::filesystem::path& path, const World& world, std::span<const BodyId> bodies);
+  // `bodies[i]` is body i of the scene, `joints[i]` joint i. Throws OutputError when `path`
+  // cannot be written.
+  EventLog(const std::filesystem::path& path, const World& world, std::span<const BodyId> bodies,
+           std::span<const JointId> joints = {});
   ~EventLog();
   EventLog(const EventLog&) = delete;
   EventLog& operator=(const EventLog&) = delete;
@@ -44,6 +48,7 @@ class EventLog {
   void sensor_begin(const World& world, const SensorBeginEvent& event);
   void sensor_end(const World& world, const SensorEndEvent& event);
   void hit(const World& world, const ContactHitEvent& event);
+  void joint_break(const World& world, const JointBreakEvent& event);
 
   // A line with the fields every event has: step, type, the two shapes and their bodies.
   Line pair_line(const World& world, std::string_view type, ShapeId a, ShapeId b) const;
@@ -60,6 +65,7 @@ class EventLog {
   // name a shape (and body) destroyed since, which the world can no longer tell.
   std::unordered_map<std::uint64_t, std::size_t> body_indices_;
   std::unordered_map<std::uint64_t, std::size_t> shape_bodies_;
+  std::unordered_map<std::uint64_t, std::size_t> joint_indices_;  // joint slot -> scene index
 };
 
 }  // namespace mink::cli

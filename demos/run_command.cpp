@@ -94,6 +94,7 @@ int run_scene(const RunOptions& options, Streams streams) {
   World world = build_world(scene);
   // A fresh world's slot order is the scene's order: body i of the scene is bodies[i].
   const std::vector<BodyId> bodies = world.bodies();
+  const std::vector<JointId> joints = world.joints();  // likewise joint i of the scene
   const Real dt = scene.world.time_step;
   long long steps = 600;
   if (options.steps) steps = *options.steps;
@@ -137,7 +138,7 @@ int run_scene(const RunOptions& options, Streams streams) {
     trace->write_step(world);  // step 0: the initial state
   }
   std::optional<EventLog> events;
-  if (!options.events.empty()) events.emplace(options.events, world, bodies);
+  if (!options.events.empty()) events.emplace(options.events, world, bodies, joints);
   // A frame every this many steps keeps video time equal to simulated time.
   const long long frame_every = std::max(1LL, std::llround(1.0 / (options.fps * dt)));
   Image image;
@@ -243,7 +244,8 @@ Action add_run_command(CLI::App& app, Streams streams) {
       ->needs(trace);
   command->add_option("--events", options->events,
                       "events as JSON Lines: step, type (contact_begin, contact_end, hit, "
-                      "sensor_begin, sensor_end), shape_a, shape_b, body_a, body_b");
+                      "sensor_begin, sensor_end, joint_break), shape_a, shape_b or joint, "
+                      "body_a, body_b");
   command->add_option("--save", options->save, "write the final world as a scene file");
   command->add_flag("--no-render")
       ->description("no GL at all, not even loaded: statistics, traces and events only")

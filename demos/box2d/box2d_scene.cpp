@@ -3,6 +3,7 @@
 #include <box2d/box2d.h>
 
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "box2d_distance.hpp"
@@ -26,6 +27,16 @@ Box2dScene build_box2d_world(const SceneDef& scene) {
             " hull vertices; a Box2D polygon holds at most " +
             std::to_string(b2_maxPolygonVertices) + " and hulls are never truncated");
       }
+    }
+  }
+  // Joints: only what the comparison's scenes need (the tumbler's motor) is translated.
+  for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+    const auto* revolute = std::get_if<RevoluteJointDef>(&scene.joints[i].def);
+    if (revolute == nullptr || revolute->spring.enabled) {
+      throw InvalidArgumentError("joint " + std::to_string(i) + " is a " +
+                                 std::string(to_string(joint_type(scene.joints[i].def))) +
+                                 (revolute != nullptr ? " joint with a spring" : " joint") +
+                                 "; the Box2D scene takes revolute joints without springs only");
     }
   }
   Box2dScene result;
@@ -68,6 +79,26 @@ Box2dScene build_box2d_world(const SceneDef& scene) {
       top_y = def.position.y;
       result.top = b;
     }
+  }
+  const auto point = [](const Vec2& v) {
+    return b2Vec2(static_cast<float>(v.x()), static_cast<float>(v.y()));
+  };
+  for (const SceneJoint& joint : scene.joints) {
+    const auto& revolute = std::get<RevoluteJointDef>(joint.def);
+    b2RevoluteJointDef def;
+    def.bodyA = result.bodies.at(joint.body_a);
+    def.bodyB = result.bodies.at(joint.body_b);
+    def.collideConnected = revolute.collide_connected;
+    def.localAnchorA = point(revolute.local_anchor_a);
+    def.localAnchorB = point(revolute.local_anchor_b);
+    def.referenceAngle = static_cast<float>(revolute.reference_angle);
+    def.enableLimit = revolute.limit.enabled;
+    def.lowerAngle = static_cast<float>(revolute.limit.lower);
+    def.upperAngle = static_cast<float>(revolute.limit.upper);
+    def.enableMotor = revolute.motor.enabled;
+    def.motorSpeed = static_cast<float>(revolute.motor.speed);
+    def.maxMotorTorque = static_cast<float>(revolute.motor.max_force);
+    result.world->CreateJoint(&def);
   }
   return result;
 }

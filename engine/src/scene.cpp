@@ -1,10 +1,13 @@
 #include "mink/engine/scene.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <variant>
 
 #include "mink/error.hpp"
@@ -12,10 +15,58 @@
 
 namespace mink {
 
+Pose scene_body_pose(const SceneDef& scene, std::size_t index) {
+  if (index >= scene.bodies.size()) {
+    throw InvalidArgumentError("no body " + std::to_string(index) + " in a scene of " +
+                               std::to_string(scene.bodies.size()));
+  }
+  const BodyDef& body = scene.bodies[index].body;
+  return {body.position, Rotation::from_angle(body.angle)};
+}
+
+namespace {
+
+std::string joint_path(std::size_t joint, const char* field) {
+  return "joints[" + std::to_string(joint) + "]." + field;
+}
+
+// The joint's definition with the world's ids for the scene's indices.
+JointDef joint_in_world(const SceneJoint& joint, std::size_t index, std::span<const BodyId> bodies,
+                        std::span<const JointId> joints) {
+  JointDef def = joint.def;
+  if (auto* gear = std::get_if<GearJointDef>(&def)) {
+    // Only earlier joints exist yet: a gear is made after the joints it couples.
+    const auto earlier = [&](std::size_t j, const char* field) {
+      if (j >= index) {
+        throw InvalidArgumentError(joint_path(index, field) + ": no joint " + std::to_string(j) +
+                                   " before this one");
+      }
+      return joints[j];
+    };
+    gear->joint1 = earlier(joint.joint1, "joint1");
+    gear->joint2 = earlier(joint.joint2, "joint2");
+    return def;
+  }
+  const auto body = [&](std::size_t b, const char* field) {
+    if (b >= bodies.size()) {
+      throw InvalidArgumentError(joint_path(index, field) + ": no body " + std::to_string(b));
+    }
+    return bodies[b];
+  };
+  JointBase& base = std::visit([](auto& d) -> JointBase& { return d; }, def);
+  base.body_a = body(joint.body_a, "body_a");
+  base.body_b = body(joint.body_b, "body_b");
+  return def;
+}
+
+}  // namespace
+
 World build_world(const SceneDef& scene) {
   World world(scene.world);
+  std::vector<BodyId> bodies;
   for (const SceneBody& body : scene.bodies) {
     const BodyId id = world.create_body(body.body);
+    bodies.push_back(id);
     for (const ShapeDef& shape : body.shapes) {
       if (shape.type == ShapeType::chain) {
         world.create_chain(id, shape);
@@ -23,8 +74,19 @@ World build_world(const SceneDef& scene) {
         world.create_shape(id, shape);
       }
     }
-    // Adding shapes wakes the body; respect a body defined asleep.
-    if (!body.body.awake) world.set_awake(id, false);
+  }
+  std::vector<JointId> joints;
+  for (std::size_t i = 0; i < scene.joints.size(); ++i) {
+    const JointDef def = joint_in_world(scene.joints[i], i, bodies, joints);
+    try {
+      joints.push_back(world.create_joint(def));
+    } catch (const InvalidArgumentError& error) {
+      throw InvalidArgumentError("joints[" + std::to_string(i) + "]: " + error.what());
+    }
+  }
+  // Adding shapes and joints wakes bodies; respect a body defined asleep.
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (!scene.bodies[i].body.awake) world.set_awake(bodies[i], false);
   }
   return world;
 }
@@ -97,6 +159,37 @@ std::vector<ShapeDef> captured_shapes(const World& world, BodyId body) {
   return shapes;
 }
 
+// Every live joint with the scene's indices for the world's ids (scene.bodies already in
+// world.bodies() order), ids cleared so that a captured joint equals one read from a file.
+void capture_joints(const World& world, SceneDef& scene) {
+  std::map<std::uint32_t, std::size_t> body_index, joint_index;
+  const std::vector<BodyId> bodies = world.bodies();
+  for (std::size_t i = 0; i < bodies.size(); ++i) body_index[bodies[i].index] = i;
+  std::vector<JointId> ids = world.joints();
+  // A gear may sit in a lower slot than its joints (slots are reused), but must come after
+  // them; gears never couple gears, so gears last is enough.
+  std::stable_partition(ids.begin(), ids.end(),
+                        [&](JointId id) { return world.joint_type(id) != JointType::gear; });
+  for (std::size_t i = 0; i < ids.size(); ++i) joint_index[ids[i].index] = i;
+  for (const JointId id : ids) {
+    SceneJoint joint;
+    joint.def = world.joint_def(id);
+    if (auto* gear = std::get_if<GearJointDef>(&joint.def)) {
+      joint.joint1 = joint_index.at(gear->joint1.index);
+      joint.joint2 = joint_index.at(gear->joint2.index);
+      gear->joint1 = JointId{};
+      gear->joint2 = JointId{};
+    } else {
+      joint.body_a = body_index.at(world.joint_body_a(id).index);
+      joint.body_b = body_index.at(world.joint_body_b(id).index);
+    }
+    JointBase& base = std::visit([](auto& d) -> JointBase& { return d; }, joint.def);
+    base.body_a = BodyId{};
+    base.body_b = BodyId{};
+    scene.joints.push_back(std::move(joint));
+  }
+}
+
 }  // namespace
 
 SceneDef capture_scene(const World& world) {
@@ -125,6 +218,7 @@ SceneDef capture_scene(const World& world) {
     body.shapes = captured_shapes(world, id);
     scene.bodies.push_back(std::move(body));
   }
+  capture_joints(world, scene);
   return scene;
 }
 
@@ -244,27 +338,254 @@ SceneDef rain_scene(int body_count, std::uint64_t seed, RainShapes kinds) {
 
 namespace {
 
+// Appends a body with these shapes; returns its index.
+std::size_t add_body(SceneDef& scene, BodyType type, const Vec2& position,
+                     std::vector<ShapeDef> shapes, Real angle = 0) {
+  SceneBody body;
+  body.body.type = type;
+  body.body.position = position;
+  body.body.angle = angle;
+  body.shapes = std::move(shapes);
+  scene.bodies.push_back(std::move(body));
+  return scene.bodies.size() - 1;
+}
+
+// Appends a joint of `def`'s kind between bodies a and b of the scene at world points (one
+// point twice for kinds with one anchor), holding the bodies as they are defined.
+template <class Def>
+SceneJoint& add_joint(SceneDef& scene, std::size_t a, std::size_t b, const Vec2& anchor_a,
+                      const Vec2& anchor_b, Def def = {}) {
+  def.local_anchor_a = scene_body_pose(scene, a).apply_inverse(anchor_a);
+  def.local_anchor_b = scene_body_pose(scene, b).apply_inverse(anchor_b);
+  if constexpr (requires { def.reference_angle; }) {
+    def.reference_angle = scene.bodies[b].body.angle - scene.bodies[a].body.angle;
+  }
+  if constexpr (std::is_same_v<Def, DistanceJointDef>) def.length = (anchor_b - anchor_a).norm();
+  SceneJoint joint;
+  joint.def = def;
+  joint.body_a = a;
+  joint.body_b = b;
+  scene.joints.push_back(std::move(joint));
+  return scene.joints.back();
+}
+
+// A drum of boxes turned by a revolute motor about a static hub: the drum is dynamic, so the
+// boxes' weight loads the motor, which has torque to spare.
 SceneDef tumbler_scene() {
   SceneDef scene;
-  SceneBody drum;
-  drum.body.type = BodyType::kinematic;
-  drum.body.position = Vec2(0, 10);
-  drum.body.angular_velocity = 0.25;
-  drum.body.allow_sleep = false;
+  const std::size_t hub = add_body(scene, BodyType::static_body, Vec2(0, 10), {});
   const Real half = 10, wall = 0.5;
-  drum.shapes.push_back(ShapeDef::box(wall, half, Vec2(half, 0)));
-  drum.shapes.push_back(ShapeDef::box(wall, half, Vec2(-half, 0)));
-  drum.shapes.push_back(ShapeDef::box(half, wall, Vec2(0, half)));
-  drum.shapes.push_back(ShapeDef::box(half, wall, Vec2(0, -half)));
-  scene.bodies.push_back(std::move(drum));
+  const std::size_t drum = add_body(
+      scene, BodyType::dynamic, Vec2(0, 10),
+      {ShapeDef::box(wall, half, Vec2(half, 0)), ShapeDef::box(wall, half, Vec2(-half, 0)),
+       ShapeDef::box(half, wall, Vec2(0, half)), ShapeDef::box(half, wall, Vec2(0, -half))});
+  scene.bodies[drum].body.allow_sleep = false;
+  RevoluteJointDef motor;
+  motor.motor = {true, 0.25, 1e8};
+  add_joint(scene, hub, drum, Vec2(0, 10), Vec2(0, 10), motor);
   for (int i = 0; i < 20; ++i) {
     for (int j = 0; j < 20; ++j) {
-      SceneBody box;
-      box.body.type = BodyType::dynamic;
-      box.body.position = Vec2(-7.6 + 0.8 * i, 2.4 + 0.8 * j);
-      box.shapes.push_back(ShapeDef::box(0.25, 0.25));
-      scene.bodies.push_back(std::move(box));
+      add_body(scene, BodyType::dynamic, Vec2(-7.6 + 0.8 * i, 2.4 + 0.8 * j),
+               {ShapeDef::box(0.25, 0.25)});
     }
+  }
+  return scene;
+}
+
+// Pendulums from a ceiling, started 1 rad out: three rigid ones on revolute joints (3, 4 and
+// 5 m), a double pendulum, and two on distance joints (one rigid, one a spring). Their bobs
+// share a negative group, so they swing through each other.
+SceneDef pendulum_scene() {
+  SceneDef scene;
+  const Real top = 12;
+  const std::size_t ceiling =
+      add_body(scene, BodyType::static_body, Vec2(0, top), {ShapeDef::box(14, 0.1, Vec2(0, 0.1))});
+  const auto bob = [&](const Vec2& at, const Vec2& pivot) {
+    ShapeDef ball = ShapeDef::circle(0.3);
+    ShapeDef rod = ShapeDef::capsule(Vec2(0, 0), pivot - at, 0.05);
+    ball.filter.group = rod.filter.group = -1;
+    return add_body(scene, BodyType::dynamic, at, {std::move(ball), std::move(rod)});
+  };
+  const Vec2 out(std::sin(1.0), -std::cos(1.0));  // 1 rad from hanging straight down
+  for (int i = 0; i < 3; ++i) {
+    const Vec2 pivot(-12 + 4 * i, top);
+    add_joint<RevoluteJointDef>(scene, ceiling, bob(pivot + (3 + i) * out, pivot), pivot, pivot);
+  }
+  const Vec2 pivot(2, top), elbow = pivot + 2.5 * out, hand = elbow + Vec2(2.5, 0);
+  const std::size_t upper = bob(elbow, pivot);
+  add_joint<RevoluteJointDef>(scene, ceiling, upper, pivot, pivot);
+  add_joint<RevoluteJointDef>(scene, upper, bob(hand, elbow), elbow, elbow);
+  for (int i = 0; i < 2; ++i) {
+    const Vec2 anchor(8 + 4 * i, top), at = anchor + 4 * out;
+    ShapeDef ball = ShapeDef::circle(0.4);
+    ball.filter.group = -1;
+    const std::size_t b = add_body(scene, BodyType::dynamic, at, {std::move(ball)});
+    SceneJoint& joint = add_joint<DistanceJointDef>(scene, ceiling, b, anchor, at);
+    if (i == 1) std::get<DistanceJointDef>(joint.def).spring = {true, 1, 0.05, 0};
+  }
+  return scene;
+}
+
+// 30 capsule links from a static pin, laid out level so that they fall and swing, ending in a
+// ball of 100 times a link's mass (the mass ratio solvers find hard).
+SceneDef chain_scene() {
+  SceneDef scene;
+  const Vec2 pin(-10, 20);
+  const Real h = 0.25, r = 0.1;  // half length between the link's pins, radius
+  std::size_t previous =
+      add_body(scene, BodyType::static_body, pin, {ShapeDef::box(0.2, 0.2, Vec2(-0.3, 0))});
+  for (int i = 0; i < 30; ++i) {
+    const std::size_t link = add_body(scene, BodyType::dynamic, pin + Vec2((2 * i + 1) * h, 0),
+                                      {ShapeDef::capsule(Vec2(-h, 0), Vec2(h, 0), r)});
+    const Vec2 joint = pin + Vec2(2 * i * h, 0);
+    add_joint<RevoluteJointDef>(scene, previous, link, joint, joint);
+    previous = link;
+  }
+  const Real link_mass = 4 * h * r + std::numbers::pi * r * r;  // density 1
+  const Real radius = 0.5;
+  ShapeDef ball = ShapeDef::circle(radius);
+  ball.density = 100 * link_mass / (std::numbers::pi * radius * radius);
+  const Vec2 end = pin + Vec2(60 * h, 0);
+  const std::size_t weight =
+      add_body(scene, BodyType::dynamic, end + Vec2(radius, 0), {std::move(ball)});
+  add_joint<RevoluteJointDef>(scene, previous, weight, end, end);
+  scene.bodies.push_back(static_box(Vec2(0, -1), 30, 1));
+  return scene;
+}
+
+// 20 planks pinned end to end between two static anchors, and boxes dropped on them.
+SceneDef bridge_scene() {
+  SceneDef scene;
+  scene.bodies.push_back(static_box(Vec2(0, -1), 20, 1));
+  const int planks = 20;
+  const Real y = 5, left = -planks / 2.0;
+  std::size_t previous =
+      add_body(scene, BodyType::static_body, Vec2(left - 0.5, y), {ShapeDef::box(0.5, 0.5)});
+  for (int i = 0; i <= planks; ++i) {
+    const std::size_t next = i < planks
+                                 ? add_body(scene, BodyType::dynamic, Vec2(left + i + 0.5, y),
+                                            {ShapeDef::box(0.5, 0.125)})
+                                 : add_body(scene, BodyType::static_body, Vec2(-left + 0.5, y),
+                                            {ShapeDef::box(0.5, 0.5)});
+    add_joint<RevoluteJointDef>(scene, previous, next, Vec2(left + i, y), Vec2(left + i, y));
+    previous = next;
+  }
+  for (int i = 0; i < 5; ++i) {
+    add_body(scene, BodyType::dynamic, Vec2(-6 + 3 * i, y + 2 + 0.5 * i),
+             {ShapeDef::box(0.4, 0.4)});
+  }
+  return scene;
+}
+
+// Box2D v3's human (shared/human.c) as data: capsules of a 1.8 m body whose feet are at the
+// origin, each pinned to its parent with a limited revolute joint, sprung towards standing
+// and with a weak motor at speed 0 as joint friction.
+struct Bone {
+  int parent;                // -1 for the hip
+  Real y;                    // the body's height
+  Real bottom, top, radius;  // the capsule, along the body's y axis
+  Real pivot;                // the joint's height
+  Real lower, upper;         // limits, in turns of pi
+  Real friction;             // share of the joint friction torque
+};
+constexpr std::array<Bone, 11> kHuman = {{
+    {-1, 0.95, -0.02, 0.02, 0.095, 0, 0, 0, 0},                 // hip
+    {0, 1.2, -0.135, 0.135, 0.09, 1.0, -0.25, 0, 0.5},          // torso
+    {1, 1.475, -0.038, 0.039, 0.075, 1.4, -0.3, 0.1, 0.25},     // head
+    {0, 0.775, -0.125, 0.125, 0.06, 0.9, -0.05, 0.4, 1},        // upper legs
+    {3, 0.475, -0.155, 0.125, 0.045, 0.625, -0.5, -0.02, 0.5},  // lower legs (with feet)
+    {0, 0.775, -0.125, 0.125, 0.06, 0.9, -0.05, 0.4, 1},
+    {5, 0.475, -0.155, 0.125, 0.045, 0.625, -0.5, -0.02, 0.5},
+    {1, 1.225, -0.125, 0.125, 0.035, 1.35, -0.1, 0.8, 0.5},  // upper arms
+    {7, 0.975, -0.125, 0.125, 0.03, 1.1, -0.2, 0.3, 0.1},    // lower arms
+    {1, 1.225, -0.125, 0.125, 0.035, 1.35, -0.1, 0.8, 0.5},
+    {9, 0.975, -0.125, 0.125, 0.03, 1.1, -0.2, 0.3, 0.1},
+}};
+
+// One ragdoll with its feet at `feet`; `group` (negative) keeps its parts from colliding.
+void add_ragdoll(SceneDef& scene, const Vec2& feet, std::int32_t group) {
+  const std::size_t first = scene.bodies.size();
+  for (const Bone& bone : kHuman) {
+    ShapeDef capsule = ShapeDef::capsule(Vec2(0, bone.bottom), Vec2(0, bone.top), bone.radius);
+    capsule.friction = 0.2;
+    capsule.filter.group = group;
+    std::vector<ShapeDef> shapes = {std::move(capsule)};
+    if (bone.parent == 3 || bone.parent == 5) {
+      ShapeDef foot;
+      foot.points = {{-0.03, -0.185}, {0.11, -0.185}, {0.11, -0.16}, {-0.03, -0.14}};
+      foot.radius = 0.015;
+      foot.friction = 0.05;
+      foot.filter.group = group;
+      shapes.push_back(std::move(foot));
+    }
+    const std::size_t body =
+        add_body(scene, BodyType::dynamic, feet + Vec2(0, bone.y), std::move(shapes));
+    if (bone.parent < 0) continue;
+    RevoluteJointDef def;
+    def.limit = {true, bone.lower * std::numbers::pi, bone.upper * std::numbers::pi};
+    def.motor = {true, 0, 0.05 * bone.friction};
+    def.spring = {true, 5, 0.5, 0};
+    const Vec2 pivot = feet + Vec2(0, bone.pivot);
+    add_joint(scene, first + static_cast<std::size_t>(bone.parent), body, pivot, pivot, def);
+  }
+}
+
+// Ragdolls standing in a row and more dropped on them.
+SceneDef ragdolls_scene() {
+  SceneDef scene;
+  scene.bodies.push_back(static_box(Vec2(0, -1), 20, 1));
+  for (int i = 0; i < 12; ++i) {
+    const Vec2 feet(-6 + 1.1 * (i % 6) + 0.4 * (i / 6), 3.0 * (i / 6));
+    add_ragdoll(scene, feet, -(i + 1));
+  }
+  return scene;
+}
+
+// A car on wheel joints, driven by their motors over a chain terrain of growing hills.
+SceneDef car_scene() {
+  SceneDef scene;
+  std::vector<Vec2> terrain;  // right to left: a chain's solid side is on its right
+  for (int i = 100; i >= -20; --i) {
+    const Real x = i, hills = std::clamp<Real>((x - 5) / 40, 0, 1);
+    terrain.emplace_back(x, hills * (0.8 * std::sin(0.4 * x) + 0.4 * std::sin(1.1 * x)));
+  }
+  add_body(scene, BodyType::static_body, Vec2(0, 0), {ShapeDef::chain(std::move(terrain))});
+  ShapeDef hull;
+  hull.points = {{-1.5, -0.5}, {1.5, -0.5}, {1.5, 0}, {0, 0.9}, {-1.15, 0.9}, {-1.5, 0.2}};
+  const std::size_t chassis = add_body(scene, BodyType::dynamic, Vec2(0, 1.5), {std::move(hull)});
+  for (const Real x : {-1.0, 1.0}) {
+    ShapeDef tyre = ShapeDef::circle(0.4);
+    tyre.density = 2;
+    tyre.friction = 1.5;
+    const Vec2 centre(x, 0.85);
+    const std::size_t wheel = add_body(scene, BodyType::dynamic, centre, {std::move(tyre)});
+    WheelJointDef def;
+    def.local_axis_a = Vec2(0, 1);
+    def.spring = {true, 5, 0.7, 0};
+    def.limit = {true, -0.25, 0.25};
+    def.motor = {true, -12, 40};  // clockwise: the car drives to the right
+    add_joint(scene, chassis, wheel, centre, centre, def);
+  }
+  return scene;
+}
+
+// Five balls on distance joints, touching in a row; the first starts 0.7 rad out. Restitution
+// 1 and no friction pass the blow along the row.
+SceneDef newtons_cradle_scene() {
+  SceneDef scene;
+  const Real top = 10, length = 5, radius = 0.5;
+  const std::size_t bar =
+      add_body(scene, BodyType::static_body, Vec2(0, top), {ShapeDef::box(3.5, 0.1, Vec2(0, 0.1))});
+  for (int i = 0; i < 5; ++i) {
+    const Vec2 anchor(-2 + 2 * radius * i, top);
+    const Real out = i == 0 ? 0.7 : 0;
+    const Vec2 at = anchor + length * Vec2(-std::sin(out), -std::cos(out));
+    ShapeDef ball = ShapeDef::circle(radius);
+    ball.restitution = 1;
+    ball.friction = 0;
+    const std::size_t b = add_body(scene, BodyType::dynamic, at, {std::move(ball)});
+    scene.bodies[b].body.allow_sleep = false;  // the resting balls must be awake for the blow
+    add_joint<DistanceJointDef>(scene, bar, b, anchor, at);
   }
   return scene;
 }
@@ -352,8 +673,9 @@ SceneDef shapes_scene() {
   return scene;
 }
 
-constexpr std::array<std::string_view, 7> kSceneNames = {
-    "large_pyramid", "pyramid", "many_pyramids", "rain", "tumbler", "paper", "shapes"};
+constexpr std::array<std::string_view, 13> kSceneNames = {
+    "large_pyramid", "pyramid", "many_pyramids", "rain",     "tumbler", "paper",         "shapes",
+    "pendulum",      "chain",   "bridge",        "ragdolls", "car",     "newtons_cradle"};
 
 }  // namespace
 
@@ -369,6 +691,12 @@ SceneDef builtin_scene(std::string_view name) {
   if (name == "tumbler") return tumbler_scene();
   if (name == "paper") return paper_scene();
   if (name == "shapes") return shapes_scene();
+  if (name == "pendulum") return pendulum_scene();
+  if (name == "chain") return chain_scene();
+  if (name == "bridge") return bridge_scene();
+  if (name == "ragdolls") return ragdolls_scene();
+  if (name == "car") return car_scene();
+  if (name == "newtons_cradle") return newtons_cradle_scene();
   throw InvalidArgumentError("unknown scene '" + std::string(name) + "'");
 }
 

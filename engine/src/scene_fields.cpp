@@ -1,8 +1,12 @@
 #include "mink/engine/scene_fields.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace mink {
@@ -189,6 +193,338 @@ void set_algorithm(ShapeDef& shape, const FieldValue& value) {
   shape.algorithm = parse_hull_algorithm(std::get<std::string>(value));
 }
 
+// ---- Joints ----
+// A joint key lives in some kinds' definitions: `Kinds<...>` lists them (and says so in the
+// docs), a `Part` lambda points at the key's member in a definition of one of them.
+
+template <class... Defs>
+struct Kinds {
+  template <class D>
+  static constexpr bool has = (std::is_same_v<std::remove_cvref_t<D>, Defs> || ...);
+  static bool applies(const SceneJointRecord& r) {
+    return std::visit([](const auto& d) { return has<decltype(d)>; }, r.joint.def);
+  }
+  // "revolute, prismatic and wheel joints", from the kinds' own names.
+  static std::string_view text() {
+    static const std::string out = [] {
+      const std::vector<std::string_view> names = {to_string(joint_type(JointDef(Defs{})))...};
+      std::string list;
+      for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0) list += i + 1 == names.size() ? " and " : ", ";
+        list += names[i];
+      }
+      return list + " joints";
+    }();
+    return out;
+  }
+};
+
+using AnyJoint = Kinds<RevoluteJointDef, PrismaticJointDef, DistanceJointDef, WeldJointDef,
+                       WheelJointDef, MotorJointDef, GearJointDef, PulleyJointDef>;
+using TwoBodies = Kinds<RevoluteJointDef, PrismaticJointDef, DistanceJointDef, WeldJointDef,
+                        WheelJointDef, MotorJointDef, PulleyJointDef>;
+using Anchored = Kinds<RevoluteJointDef, PrismaticJointDef, DistanceJointDef, WeldJointDef,
+                       WheelJointDef, PulleyJointDef>;
+using OneAnchor = Kinds<RevoluteJointDef, PrismaticJointDef, WeldJointDef, WheelJointDef>;
+using TwoAnchors = Kinds<DistanceJointDef, PulleyJointDef>;
+using Axial = Kinds<PrismaticJointDef, WheelJointDef>;
+using Angled = Kinds<RevoluteJointDef, PrismaticJointDef, WeldJointDef>;
+using Bounded = Kinds<RevoluteJointDef, PrismaticJointDef, WheelJointDef>;
+using Driven = Kinds<RevoluteJointDef, PrismaticJointDef, DistanceJointDef, WheelJointDef>;
+using Turning = Kinds<RevoluteJointDef, WheelJointDef>;
+using Pushing = Kinds<PrismaticJointDef, DistanceJointDef>;
+using Targeted = Kinds<RevoluteJointDef, PrismaticJointDef, WheelJointDef>;
+using Distance = Kinds<DistanceJointDef>;
+using Weld = Kinds<WeldJointDef>;
+using Motor = Kinds<MotorJointDef>;
+using Gear = Kinds<GearJointDef>;
+using Pulley = Kinds<PulleyJointDef>;
+using Ratio = Kinds<GearJointDef, PulleyJointDef>;
+
+using JointRow = SceneField<SceneJointRecord>;
+
+template <class K, auto Part>
+FieldValue get_def(const SceneJointRecord& r) {
+  return std::visit(
+      [](const auto& d) -> FieldValue {
+        if constexpr (K::template has<decltype(d)>) {
+          return to_value(*Part(d));
+        } else {
+          return FieldValue{};  // never asked: the row does not apply
+        }
+      },
+      r.joint.def);
+}
+// `Enable` turns on what the key belongs to (a limit), or is null.
+template <class K, auto Part, auto Enable = nullptr>
+void set_def(SceneJointRecord& r, const FieldValue& value) {
+  std::visit(
+      [&](auto& d) {
+        if constexpr (K::template has<decltype(d)>) {
+          from_value(value, *Part(d));
+          if constexpr (!std::is_null_pointer_v<decltype(Enable)>) Enable(d);
+        }
+      },
+      r.joint.def);
+}
+template <class K, auto Flag>
+bool def_flag(const SceneJointRecord& r) {
+  return std::visit(
+      [](const auto& d) {
+        if constexpr (K::template has<decltype(d)>) {
+          return Flag(d);
+        } else {
+          return false;
+        }
+      },
+      r.joint.def);
+}
+
+// A key of the definitions of kinds K.
+template <class K, auto Part, auto Enable = nullptr>
+JointRow def_field(std::string_view key, FieldKind kind, std::string_view doc,
+                   FieldRange range = {}) {
+  JointRow out =
+      row<SceneJointRecord>(key, kind, &get_def<K, Part>, &set_def<K, Part, Enable>, doc, range);
+  if constexpr (!std::is_same_v<K, AnyJoint>) {
+    out.applies = &K::applies;
+    out.applies_to = K::text();
+  }
+  return out;
+}
+// A key of a nested part's object: the part already says which kinds have it.
+template <class K, auto Part>
+JointRow part_field(std::string_view key, FieldKind kind, std::string_view doc,
+                    FieldRange range = {}) {
+  JointRow out = def_field<K, Part>(key, kind, doc, range);
+  out.applies = nullptr;
+  out.applies_to = {};
+  return out;
+}
+// An optional key, absent unless `Present` (e.g. a limit's bound: only while it is on).
+template <class K, auto Part, auto Enable, auto Present>
+JointRow optional_field(std::string_view key, std::string_view doc, FieldRange range = {}) {
+  JointRow out = def_field<K, Part, Enable>(key, FieldKind::real, doc, range);
+  out.present = &def_flag<K, Present>;
+  return out;
+}
+
+// Scene indices (of bodies, of joints) kept in the record's SceneJoint.
+template <auto Member>
+FieldValue get_index(const SceneJointRecord& r) {
+  return static_cast<std::int64_t>(r.joint.*Member);
+}
+template <auto Member>
+void set_index(SceneJointRecord& r, const FieldValue& value) {
+  r.joint.*Member = static_cast<std::size_t>(std::get<std::int64_t>(value));
+}
+template <class K, auto Member>
+JointRow index_field(std::string_view key, std::string_view doc) {
+  JointRow out = required(row<SceneJointRecord>(key, FieldKind::integer, &get_index<Member>,
+                                                &set_index<Member>, doc, {0, 2147483647.0}));
+  out.applies = &K::applies;
+  out.applies_to = K::text();
+  return out;
+}
+
+// World-frame keys: read only, the reader converts them once the bodies are known.
+bool never(const SceneJointRecord&) {
+  return false;
+}
+template <auto Member>
+FieldValue get_world(const SceneJointRecord& r) {
+  return (r.*Member).value_or(Vec2(0, 0));
+}
+template <auto Member>
+void set_world(SceneJointRecord& r, const FieldValue& value) {
+  r.*Member = std::get<Vec2>(value);
+}
+template <class K, auto Member>
+JointRow world_field(std::string_view key, std::string_view doc) {
+  JointRow out =
+      row<SceneJointRecord>(key, FieldKind::vec2, &get_world<Member>, &set_world<Member>, doc);
+  out.applies = &K::applies;
+  out.applies_to = K::text();
+  out.present = &never;
+  return out;
+}
+
+std::span<const std::string_view> joint_type_names() {
+  static const std::vector<std::string_view> names = [] {
+    std::vector<std::string_view> out;
+    for (std::size_t i = 0; i < std::variant_size_v<JointDef>; ++i) {
+      out.push_back(to_string(static_cast<JointType>(i)));
+    }
+    return out;
+  }();
+  return names;
+}
+FieldValue get_joint_type(const SceneJointRecord& r) {
+  return std::string(to_string(joint_type(r.joint.def)));
+}
+template <std::size_t... I>
+JointDef default_def(std::size_t index, std::index_sequence<I...>) {
+  JointDef out;
+  ((index == I ? (out = std::variant_alternative_t<I, JointDef>{}, 0) : 0), ...);
+  return out;
+}
+// The type comes first in the table: it makes the kind's default definition, which the other
+// keys then fill in.
+void set_joint_type(SceneJointRecord& r, const FieldValue& value) {
+  const auto names = joint_type_names();
+  const auto at = std::find(names.begin(), names.end(), std::get<std::string>(value));
+  r.joint.def = default_def(static_cast<std::size_t>(at - names.begin()),
+                            std::make_index_sequence<std::variant_size_v<JointDef>>());
+}
+
+bool finite_force(const SceneJointRecord& r) {
+  return std::isfinite(std::visit([](const auto& d) { return d.break_force; }, r.joint.def));
+}
+bool finite_torque(const SceneJointRecord& r) {
+  return std::isfinite(std::visit([](const auto& d) { return d.break_torque; }, r.joint.def));
+}
+
+constexpr auto kLimitOn = [](auto& d) { d.limit.enabled = true; };
+constexpr auto kLimitOnNow = [](const auto& d) { return d.limit.enabled; };
+
+const std::vector<JointRow>& joint_rows() {
+  static const std::vector<JointRow> rows = [] {
+    JointRow type = required(name_field<SceneJointRecord>("type", &get_joint_type, &set_joint_type,
+                                                          "the kind of joint", &joint_type_names));
+    JointRow force = def_field<AnyJoint, [](auto& d) { return &d.break_force; }>(
+        "break_force", FieldKind::real,
+        "N: a joint_break event each step the joint's force exceeds it", kNonNegative);
+    force.present = &finite_force;
+    JointRow torque = def_field<AnyJoint, [](auto& d) { return &d.break_torque; }>(
+        "break_torque", FieldKind::real,
+        "N m: a joint_break event each step the joint's torque exceeds it", kNonNegative);
+    torque.present = &finite_torque;
+    return std::vector<JointRow>{
+        type,
+        index_field<TwoBodies, &SceneJoint::body_a>(
+            "body_a", "index into bodies: body A, whose frame holds axes and angles"),
+        index_field<TwoBodies, &SceneJoint::body_b>("body_b", "index into bodies: body B"),
+        index_field<Gear, &SceneJoint::joint1>(
+            "joint1", "index into joints: an earlier revolute or prismatic joint"),
+        index_field<Gear, &SceneJoint::joint2>(
+            "joint2", "index into joints: another earlier revolute or prismatic joint"),
+        world_field<OneAnchor, &SceneJointRecord::anchor>(
+            "anchor", "world point joining the bodies (read only: written as local anchors)"),
+        world_field<TwoAnchors, &SceneJointRecord::anchor_a>(
+            "anchor_a", "world point on body A (read only: written as local_anchor_a)"),
+        world_field<TwoAnchors, &SceneJointRecord::anchor_b>(
+            "anchor_b", "world point on body B (read only: written as local_anchor_b)"),
+        def_field<Anchored, [](auto& d) { return &d.local_anchor_a; }>(
+            "local_anchor_a", FieldKind::vec2, "the anchor on body A, in A's frame"),
+        def_field<Anchored, [](auto& d) { return &d.local_anchor_b; }>(
+            "local_anchor_b", FieldKind::vec2, "the anchor on body B, in B's frame"),
+        world_field<Axial, &SceneJointRecord::axis>(
+            "axis", "world direction, any length (read only: written as local_axis_a)"),
+        def_field<Axial, [](auto& d) { return &d.local_axis_a; }>(
+            "local_axis_a", FieldKind::vec2, "unit axis in A's frame: slide or suspension"),
+        def_field<Angled, [](auto& d) { return &d.reference_angle; }>(
+            "reference_angle", FieldKind::real,
+            "B's angle minus A's where the joint angle is 0 (with anchor: as the bodies are)"),
+        optional_field<Bounded, [](auto& d) { return &d.limit.lower; }, kLimitOn, kLimitOnNow>(
+            "lower", "limit's lower bound, rad or m; lower and upper turn the limit on"),
+        optional_field<Bounded, [](auto& d) { return &d.limit.upper; }, kLimitOn, kLimitOnNow>(
+            "upper", "limit's upper bound, >= lower"),
+        def_field<Distance, [](auto& d) { return &d.length; }>(
+            "length", FieldKind::real, "rest length, m (with anchor_a, anchor_b: their distance)",
+            kPositive),
+        optional_field<Distance, [](auto& d) { return &d.limit.lower; }, kLimitOn, kLimitOnNow>(
+            "min_length", "shortest length, m (0 when only max_length is given)", kNonNegative),
+        optional_field<Distance, [](auto& d) { return &d.limit.upper; }, kLimitOn, kLimitOnNow>(
+            "max_length", "longest length, m (a rope: min_length 0)", kNonNegative),
+        def_field<Weld, [](auto& d) { return &d.linear_hertz; }>(
+            "linear_hertz", FieldKind::real, "0: rigid; else a spring's frequency", kNonNegative),
+        def_field<Weld, [](auto& d) { return &d.linear_damping_ratio; }>(
+            "linear_damping_ratio", FieldKind::real, "1: critical", kNonNegative),
+        def_field<Weld, [](auto& d) { return &d.angular_hertz; }>(
+            "angular_hertz", FieldKind::real, "0: rigid; else a spring's frequency", kNonNegative),
+        def_field<Weld, [](auto& d) { return &d.angular_damping_ratio; }>(
+            "angular_damping_ratio", FieldKind::real, "1: critical", kNonNegative),
+        def_field<Motor, [](auto& d) { return &d.linear_offset; }>(
+            "linear_offset", FieldKind::vec2, "target: B's origin in A's frame"),
+        def_field<Motor, [](auto& d) { return &d.angular_offset; }>(
+            "angular_offset", FieldKind::real, "target: B's angle minus A's"),
+        def_field<Motor, [](auto& d) { return &d.max_force; }>(
+            "max_force", FieldKind::real, "N, most force to reach the target", kNonNegative),
+        def_field<Motor, [](auto& d) { return &d.max_torque; }>(
+            "max_torque", FieldKind::real, "N m, most torque to reach the target", kNonNegative),
+        def_field<Motor, [](auto& d) { return &d.correction_factor; }>(
+            "correction_factor", FieldKind::real, "share of the error removed per step",
+            FieldRange{0, 1}),
+        def_field<Ratio, [](auto& d) { return &d.ratio; }>(
+            "ratio", FieldKind::real,
+            "gear: non-zero; pulley: > 0, B's rope counts this many times"),
+        def_field<Pulley, [](auto& d) { return &d.ground_anchor_a; }>(
+            "ground_a", FieldKind::vec2, "world point A's rope runs over"),
+        def_field<Pulley, [](auto& d) { return &d.ground_anchor_b; }>(
+            "ground_b", FieldKind::vec2, "world point B's rope runs over"),
+        def_field<Pulley, [](auto& d) { return &d.length_a; }>(
+            "length_a", FieldKind::real, "A's rope, m (with anchor_a: from it to ground_a)",
+            kPositive),
+        def_field<Pulley, [](auto& d) { return &d.length_b; }>(
+            "length_b", FieldKind::real, "B's rope, m (with anchor_b: from it to ground_b)",
+            kPositive),
+        def_field<AnyJoint, [](auto& d) { return &d.collide_connected; }>(
+            "collide_connected", FieldKind::boolean, "let the two bodies collide"),
+        force,
+        torque,
+        def_field<AnyJoint, [](auto& d) { return &d.user_data; }>(
+            "user_data", FieldKind::user_data, "kept for the caller (JointBase::user_data)"),
+    };
+  }();
+  return rows;
+}
+
+const std::vector<JointRow>& motor_rows() {
+  static const std::vector<JointRow> rows = {
+      part_field<Driven, [](auto& d) { return &d.motor.enabled; }>(
+          "enabled", FieldKind::boolean, "false keeps the motor's settings but turns it off"),
+      part_field<Driven, [](auto& d) { return &d.motor.speed; }>(
+          "speed", FieldKind::real, "target speed of the joint's coordinate, rad/s or m/s"),
+      def_field<Turning, [](auto& d) { return &d.motor.max_force; }>(
+          "max_torque", FieldKind::real, "N m, the most the motor applies", kNonNegative),
+      def_field<Pushing, [](auto& d) { return &d.motor.max_force; }>(
+          "max_force", FieldKind::real, "N, the most the motor applies", kNonNegative),
+  };
+  return rows;
+}
+
+const std::vector<JointRow>& spring_rows() {
+  static const std::vector<JointRow> rows = {
+      part_field<Driven, [](auto& d) { return &d.spring.enabled; }>(
+          "enabled", FieldKind::boolean, "false keeps the spring's settings but turns it off"),
+      part_field<Driven, [](auto& d) { return &d.spring.hertz; }>(
+          "hertz", FieldKind::real, "natural frequency (0: damping only)", kNonNegative),
+      part_field<Driven, [](auto& d) { return &d.spring.damping_ratio; }>(
+          "damping_ratio", FieldKind::real, "1: critical", kNonNegative),
+      def_field<Targeted, [](auto& d) { return &d.spring.target; }>(
+          "target", FieldKind::real, "rest angle or translation (a distance joint's is length)"),
+  };
+  return rows;
+}
+
+const std::vector<SceneJointPart>& part_list() {
+  static const std::vector<SceneJointPart> parts = {
+      {"motor", &Driven::applies, Driven::text(),
+       [](SceneJointRecord& r) {
+         set_def<Driven, [](auto& d) { return &d.motor.enabled; }>(
+             r, FieldValue(std::in_place_type<bool>, true));
+       },
+       motor_rows()},
+      {"spring", &Driven::applies, Driven::text(),
+       [](SceneJointRecord& r) {
+         set_def<Driven, [](auto& d) { return &d.spring.enabled; }>(
+             r, FieldValue(std::in_place_type<bool>, true));
+       },
+       spring_rows()},
+  };
+  return parts;
+}
+
 constexpr SceneField<WorldDef> kWorldFields[] = {
     field<&WorldDef::gravity>("gravity", FieldKind::vec2, "m/s^2, world frame"),
     field<&WorldDef::time_step>("time_step", FieldKind::real, "seconds per fixed step", kPositive),
@@ -363,6 +699,12 @@ std::span<const SceneField<ShapeScale>> scale_fields() noexcept {
 }
 std::span<const SceneShapeForm> shape_forms() noexcept {
   return kShapeForms;
+}
+std::span<const SceneField<SceneJointRecord>> joint_fields() noexcept {
+  return joint_rows();
+}
+std::span<const SceneJointPart> joint_parts() noexcept {
+  return part_list();
 }
 std::span<const SceneField<SceneBox>> box_fields() noexcept {
   return kBoxFields;

@@ -199,13 +199,12 @@ void read_fields(ObjectReader& reader, std::span<const SceneField<Object>> field
   for (const SceneField<Object>& field : fields) {
     const Json* value = reader.find(field.key);
     const std::string path = reader.child(field.key);
+    const bool applies = field.applies == nullptr || field.applies(object);
     if (value == nullptr) {
-      if (field.required) throw SceneFileError(path, "missing field");
+      if (field.required && applies) throw SceneFileError(path, "missing field");
       continue;
     }
-    if (field.applies != nullptr && !field.applies(object)) {
-      throw SceneFileError(path, "only allowed on " + std::string(field.applies_to));
-    }
+    if (!applies) throw SceneFileError(path, "only allowed on " + std::string(field.applies_to));
     field.set(object, read_value(*value, path, field));
   }
 }
@@ -262,6 +261,7 @@ Json write_fields(std::span<const SceneField<Object>> fields, const Object& obje
   Json out = Json::object();
   for (const SceneField<Object>& field : fields) {
     if (field.applies != nullptr && !field.applies(object)) continue;
+    if (field.present != nullptr && !field.present(object)) continue;
     out[std::string(field.key)] = write_value(field.get(object), field.kind);
   }
   return out;
@@ -392,6 +392,207 @@ Json shape_json(const ShapeDef& shape) {
   return out;
 }
 
+// ---- Joints ----
+
+// Shortest round-trip form, "3" rather than JSON's "3.0", as the numbers were likely written.
+std::string number_text(Real x) {
+  std::array<char, 32> buffer{};
+  return std::string(buffer.data(),
+                     std::to_chars(buffer.data(), buffer.data() + buffer.size(), x).ptr);
+}
+
+// Two keys that say the same thing in two frames; one of them at most.
+void exclusive(const ObjectReader& reader, std::string_view world_key, std::string_view local_key) {
+  if (reader.has(world_key) && reader.has(local_key)) {
+    throw SceneFileError(reader.child(local_key), "give only one of " + std::string(world_key) +
+                                                      " and " + std::string(local_key));
+  }
+}
+
+// A limit is on when its bounds are given: both (a distance joint's min_length may be left
+// out, 0), lower <= upper.
+template <class Def>
+void check_limit(const ObjectReader& reader, const Def& def, std::string_view lower_key,
+                 std::string_view upper_key, bool lower_optional) {
+  const bool lower = reader.has(lower_key), upper = reader.has(upper_key);
+  if (lower && !upper) {
+    throw SceneFileError(reader.child(upper_key),
+                         "missing field (" + std::string(lower_key) + " is given)");
+  }
+  if (upper && !lower && !lower_optional) {
+    throw SceneFileError(reader.child(lower_key),
+                         "missing field (" + std::string(upper_key) + " is given)");
+  }
+  if (def.limit.enabled && def.limit.lower > def.limit.upper) {
+    throw SceneFileError(reader.child(upper_key), "must be >= " + std::string(lower_key) + " (" +
+                                                      number_text(def.limit.lower) + "), got " +
+                                                      number_text(def.limit.upper));
+  }
+}
+
+// A gear's joints: earlier ones (a gear is made after them), revolute or prismatic.
+void check_gear(const ObjectReader& reader, const SceneJoint& joint, const SceneDef& scene,
+                std::size_t index) {
+  for (const auto& [key, j] :
+       {std::pair{"joint1", joint.joint1}, std::pair{"joint2", joint.joint2}}) {
+    if (j >= index) {
+      throw SceneFileError(reader.child(key), "no joint " + std::to_string(j) +
+                                                  " before this one (a gear comes after its "
+                                                  "joints)");
+    }
+    const JointType type = joint_type(scene.joints[j].def);
+    if (type != JointType::revolute && type != JointType::prismatic) {
+      throw SceneFileError(reader.child(key),
+                           "joint " + std::to_string(j) + " is a " + std::string(to_string(type)) +
+                               " joint; a gear couples revolute or prismatic joints");
+    }
+  }
+  if (joint.joint1 == joint.joint2) {
+    throw SceneFileError(reader.child("joint2"),
+                         "the same joint as joint1 (" + std::to_string(joint.joint1) + ")");
+  }
+  if (std::get<GearJointDef>(joint.def).ratio == 0) {
+    throw SceneFileError(reader.child("ratio"), "must not be 0 for a gear");
+  }
+}
+
+// The checks and conversions that need the scene: indices, world-frame keys turned body-local
+// with the bodies' defined poses, and the defaults computed from them.
+void resolve_joint(const ObjectReader& reader, SceneJointRecord& record, const SceneDef& scene,
+                   std::size_t index) {
+  SceneJoint& joint = record.joint;
+  if (joint_type(joint.def) == JointType::gear) return check_gear(reader, joint, scene, index);
+  for (const auto& [key, b] :
+       {std::pair{"body_a", joint.body_a}, std::pair{"body_b", joint.body_b}}) {
+    if (b >= scene.bodies.size()) {
+      throw SceneFileError(reader.child(key), "no body " + std::to_string(b));
+    }
+  }
+  if (joint.body_a == joint.body_b) {
+    throw SceneFileError(reader.child("body_b"),
+                         "the same body as body_a (" + std::to_string(joint.body_a) + ")");
+  }
+  exclusive(reader, "anchor", "local_anchor_a");
+  exclusive(reader, "anchor", "local_anchor_b");
+  exclusive(reader, "anchor_a", "local_anchor_a");
+  exclusive(reader, "anchor_b", "local_anchor_b");
+  exclusive(reader, "axis", "local_axis_a");
+  const Pose pose_a = scene_body_pose(scene, joint.body_a);
+  const Pose pose_b = scene_body_pose(scene, joint.body_b);
+  std::visit(
+      [&](auto& d) {
+        using Def = std::decay_t<decltype(d)>;
+        if constexpr (requires { d.local_anchor_a; }) {
+          if (record.anchor) {
+            d.local_anchor_a = pose_a.apply_inverse(*record.anchor);
+            d.local_anchor_b = pose_b.apply_inverse(*record.anchor);
+          }
+          if (record.anchor_a) d.local_anchor_a = pose_a.apply_inverse(*record.anchor_a);
+          if (record.anchor_b) d.local_anchor_b = pose_b.apply_inverse(*record.anchor_b);
+        }
+        if constexpr (requires { d.reference_angle; }) {
+          // A joint placed by a world point holds the bodies as they are defined.
+          if (record.anchor && !reader.has("reference_angle")) {
+            d.reference_angle =
+                scene.bodies[joint.body_b].body.angle - scene.bodies[joint.body_a].body.angle;
+          }
+        }
+        if constexpr (requires { d.local_axis_a; }) {
+          if (record.axis) {
+            const Real length = record.axis->norm();
+            if (length == 0) throw SceneFileError(reader.child("axis"), "must not be [0, 0]");
+            d.local_axis_a = pose_a.rotation.apply_inverse(Vec2(*record.axis / length));
+          } else if (std::abs(d.local_axis_a.norm() - 1) > 1e-6) {
+            throw SceneFileError(reader.child("local_axis_a"), "must be a unit vector");
+          }
+        }
+        if constexpr (std::is_same_v<Def, DistanceJointDef>) {
+          check_limit(reader, d, "min_length", "max_length", true);
+          if ((record.anchor_a || record.anchor_b) && !reader.has("length")) {
+            d.length = (pose_b.apply(d.local_anchor_b) - pose_a.apply(d.local_anchor_a)).norm();
+            if (!(d.length > 0)) {
+              throw SceneFileError(reader.child("anchor_b"),
+                                   "is anchor_a: give a length, the anchors' distance is 0");
+            }
+          }
+        } else if constexpr (requires { d.limit; }) {
+          check_limit(reader, d, "lower", "upper", false);
+        }
+        if constexpr (std::is_same_v<Def, PulleyJointDef>) {
+          if (!(d.ratio > 0)) {
+            throw SceneFileError(reader.child("ratio"),
+                                 "must be > 0 for a pulley, got " + number_text(d.ratio));
+          }
+          const auto rope = [&](bool given, const char* key, Real& length, const Vec2& anchor,
+                                const Vec2& ground) {
+            if (!given || reader.has(key)) return;
+            length = (anchor - ground).norm();
+            if (!(length > 0)) {
+              throw SceneFileError(reader.child(key),
+                                   "missing field (the anchor is on the ground "
+                                   "point: the rope's length would be 0)");
+            }
+          };
+          rope(record.anchor_a.has_value(), "length_a", d.length_a, pose_a.apply(d.local_anchor_a),
+               d.ground_anchor_a);
+          rope(record.anchor_b.has_value(), "length_b", d.length_b, pose_b.apply(d.local_anchor_b),
+               d.ground_anchor_b);
+        }
+      },
+      joint.def);
+}
+
+SceneJoint read_joint(const Json& value, const std::string& path, const SceneDef& scene,
+                      std::size_t index) {
+  ObjectReader reader(value, path);
+  SceneJointRecord record;
+  read_fields(reader, joint_fields(), record);
+  for (const SceneJointPart& part : joint_parts()) {
+    const Json* nested = reader.find(part.key);
+    if (nested == nullptr) continue;
+    const std::string part_path = reader.child(part.key);
+    if (!part.applies(record)) {
+      throw SceneFileError(part_path, "only allowed on " + std::string(part.applies_to));
+    }
+    part.enable(record);
+    read_object(*nested, part_path, part.fields, record);
+  }
+  reader.finish();
+  resolve_joint(reader, record, scene, index);
+  return record.joint;
+}
+
+// Anything else the engine refuses, found by making the joints between shapeless twins of the
+// bodies (cheap: no shapes, no hulls).
+void check_joints_in_engine(const SceneDef& scene) {
+  if (scene.joints.empty()) return;
+  SceneDef trial;
+  trial.world = scene.world;
+  for (const SceneBody& body : scene.bodies) trial.bodies.push_back({body.body, {}});
+  trial.joints = scene.joints;
+  try {
+    (void)build_world(trial);
+  } catch (const Error& error) {
+    // build_world names the joint first: "joints[3]: problem".
+    const std::string message = error.what();
+    const std::size_t colon = message.find(": ");
+    if (message.rfind("joints[", 0) == 0 && colon != std::string::npos) {
+      throw SceneFileError(message.substr(0, colon), message.substr(colon + 2));
+    }
+    throw SceneFileError("joints", message);
+  }
+}
+
+Json joint_json(const SceneJoint& joint) {
+  SceneJointRecord record;
+  record.joint = joint;
+  Json out = write_fields(joint_fields(), record);
+  for (const SceneJointPart& part : joint_parts()) {
+    if (part.applies(record)) out[std::string(part.key)] = write_fields(part.fields, record);
+  }
+  return out;
+}
+
 // Re-reads text the DOM parser refused for a number too large for a double, to name where
 // that number is: the SAX events carry the path of the value being read.
 class PathTracker : public nlohmann::json_sax<Json> {
@@ -491,6 +692,13 @@ SceneDef parse_scene_json(std::string_view text, const std::string& source) {
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     scene.bodies.push_back(read_body(bodies[i], index_path("bodies", i)));
   }
+  if (const Json* joints = reader.find("joints")) {
+    require_array(*joints, "joints");
+    for (std::size_t i = 0; i < joints->size(); ++i) {
+      scene.joints.push_back(read_joint((*joints)[i], index_path("joints", i), scene, i));
+    }
+    check_joints_in_engine(scene);
+  }
   reader.finish();
   return scene;
 }
@@ -517,10 +725,15 @@ std::string scene_to_json(const SceneDef& scene) {
     b["shapes"] = std::move(shapes);
     bodies.push_back(std::move(b));
   }
-  const Json root = {{"format", kFormat},
-                     {"version", kVersion},
-                     {"world", write_fields(world_fields(), scene.world)},
-                     {"bodies", std::move(bodies)}};
+  Json root = {{"format", kFormat},
+               {"version", kVersion},
+               {"world", write_fields(world_fields(), scene.world)},
+               {"bodies", std::move(bodies)}};
+  if (!scene.joints.empty()) {
+    Json joints = Json::array();
+    for (const SceneJoint& joint : scene.joints) joints.push_back(joint_json(joint));
+    root["joints"] = std::move(joints);
+  }
   return root.dump(1) + "\n";
 }
 

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -242,6 +243,55 @@ TEST(RunCommand, EventsAreTheWorldsEventsAsJsonLines) {
     EXPECT_EQ(hits[i].at("point"),
               nlohmann::json::array({hit_events[i].point.x(), hit_events[i].point.y()}));
   }
+}
+
+// joint_break lines are the world's joint break events, joints and bodies by scene index, with
+// the force and torque exactly: the chain with a threshold on every other joint (the others
+// never report).
+TEST(RunCommand, EventsReportJointBreaksByJointIndex) {
+  const auto dir = fresh_dir("joint_events");
+  const auto events = (dir / "events.jsonl").string();
+  SceneDef scene = builtin_scene("chain");
+  for (std::size_t i = 0; i < scene.joints.size(); i += 2) {
+    std::visit([](auto& def) { def.break_force = 120; }, scene.joints[i].def);
+  }
+  const auto scene_path = (dir / "chain.json").string();
+  save_scene_file(scene_path, scene);
+  const CliResult r =
+      run_cli({"run", scene_path, "--steps", "90", "--no-render", "--events", events});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<nlohmann::json> got;
+  for (const std::string& line : split_lines(read_text(events))) {
+    const auto json = nlohmann::json::parse(line);
+    if (json.at("type") == "joint_break") got.push_back(json);
+  }
+  World world = build_world(scene);
+  const auto bodies = world.bodies();
+  const auto joints = world.joints();
+  const auto index = [](const auto& ids, auto id) {
+    return static_cast<std::size_t>(std::find(ids.begin(), ids.end(), id) - ids.begin());
+  };
+  std::vector<nlohmann::json> want;
+  for (int i = 0; i < 90; ++i) {
+    world.step();
+    for (const JointBreakEvent& e : world.joint_break_events()) {
+      const std::size_t joint = index(joints, e.joint);
+      EXPECT_EQ(joint % 2, 0u) << "joint " << joint << " has no threshold";
+      want.push_back({{"step", world.step_count()},
+                      {"type", "joint_break"},
+                      {"joint", joint},
+                      {"body_a", index(bodies, world.joint_body_a(e.joint))},
+                      {"body_b", index(bodies, world.joint_body_b(e.joint))},
+                      {"force", {e.force.x(), e.force.y()}},
+                      {"torque", e.torque}});
+    }
+  }
+  EXPECT_FALSE(want.empty());
+  EXPECT_LT(want.size(), 90u * 16u);  // not every thresholded joint at every step
+  EXPECT_EQ(got, want);
+  ASSERT_FALSE(got.empty());
+  EXPECT_EQ(got.front().at("body_b"), got.front().at("joint").get<std::size_t>() + 1)
+      << "the chain's joint i holds link i, body i + 1";
 }
 
 // An end event may name a shape destroyed since: the log still names its body, from the

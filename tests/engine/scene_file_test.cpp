@@ -46,6 +46,8 @@ void expect_same_scene(const SceneDef& a, const SceneDef& b) {
                         where + ".shapes[" + std::to_string(k) + "]");
     }
   }
+  // Joints, key by key: tests/engine/joint_scene_test.cpp.
+  ASSERT_EQ(a.joints.size(), b.joints.size());
 }
 
 // A value of the field's kind, in its range, that is not `current`; `salt` keeps the points of

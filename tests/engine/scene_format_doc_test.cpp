@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <sstream>
@@ -56,9 +57,7 @@ std::string kind_text(const SceneField<Object>& field) {
 }
 
 template <class Object>
-std::string default_text(const SceneField<Object>& field) {
-  if (field.required) return "required";
-  const FieldValue value = field.get(Object{});
+std::string value_text(const SceneField<Object>& field, const FieldValue& value) {
   switch (field.kind) {
     case FieldKind::real:
       return number(std::get<Real>(value));
@@ -87,7 +86,46 @@ std::string default_text(const SceneField<Object>& field) {
 }
 
 template <class Object>
-std::string render(std::span<const SceneField<Object>> fields) {
+std::string default_text(const SceneField<Object>& field) {
+  if (field.required) return "required";
+  if (field.present != nullptr) return "none";
+  return value_text(field, field.get(Object{}));
+}
+
+// A joint key's default depends on the kind: the value in each kind's default definition that
+// has the key, one value when they agree, else "kind, kind: value; kind: value". A nested
+// part's keys default to what they are once the part's object is given (`part`).
+std::string default_text(const SceneField<SceneJointRecord>& field,
+                         const SceneJointPart* part = nullptr) {
+  if (field.required) return "required";
+  if (field.present != nullptr) return "none";
+  const SceneField<SceneJointRecord>& type = joint_fields()[0];
+  std::vector<std::pair<std::string, std::string>> values;  // value, kinds
+  for (const std::string_view name : type.names()) {
+    SceneJointRecord record;
+    type.set(record, std::string(name));
+    if (part != nullptr) {
+      if (!part->applies(record)) continue;
+      part->enable(record);
+    }
+    if (field.applies != nullptr && !field.applies(record)) continue;
+    const std::string value = value_text(field, field.get(record));
+    auto same =
+        std::find_if(values.begin(), values.end(), [&](const auto& v) { return v.first == value; });
+    if (same == values.end()) {
+      values.emplace_back(value, std::string(name));
+    } else {
+      same->second += ", " + std::string(name);
+    }
+  }
+  if (values.size() == 1) return values[0].first;
+  std::string out;
+  for (const auto& [value, kinds] : values) out += (out.empty() ? "" : "; ") + kinds + ": " + value;
+  return out;
+}
+
+template <class Object, class... Context>
+std::string render(std::span<const SceneField<Object>> fields, Context... context) {
   std::string out =
       "| key | value | default | allowed | meaning |\n"
       "|-----|-------|---------|---------|---------|\n";
@@ -95,7 +133,8 @@ std::string render(std::span<const SceneField<Object>> fields) {
     std::string meaning(field.doc);
     if (field.applies != nullptr) meaning += " (only on " + std::string(field.applies_to) + ")";
     out += "| `" + std::string(field.key) + "` | " + kind_text(field) + " | " +
-           default_text(field) + " | " + field.range.describe() + " | " + meaning + " |\n";
+           default_text(field, context...) + " | " + field.range.describe() + " | " + meaning +
+           " |\n";
   }
   return out;
 }
@@ -136,6 +175,10 @@ TEST(SceneFormatDoc, EveryFieldTableIsDocumentedAsTheEngineHasIt) {
   }
   expect_table("box", render(box_fields()));
   expect_table("polygon", render(regular_polygon_fields()));
+  expect_table("joint", render(joint_fields()));
+  for (const SceneJointPart& part : joint_parts()) {
+    expect_table(std::string(part.key), render(part.fields, &part));
+  }
 }
 
 }  // namespace

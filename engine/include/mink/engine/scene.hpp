@@ -1,11 +1,13 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string_view>
 #include <vector>
 
 #include "mink/engine/body_def.hpp"
+#include "mink/engine/joint_def.hpp"
 #include "mink/engine/shape_def.hpp"
 #include "mink/engine/world.hpp"
 #include "mink/engine/world_def.hpp"
@@ -18,26 +20,46 @@ struct SceneBody {
   std::vector<ShapeDef> shapes;  ///< created in order
 };
 
-/// A scene is plain data: world settings plus body definitions with their shapes, so it can
-/// be written to and read from files. Bodies are created in order.
-struct SceneDef {
-  WorldDef world;                 ///< world settings
-  std::vector<SceneBody> bodies;  ///< created in order
+/// One joint of a scene. `def` is body-local (anchors in each body's frame, as the *_joint_at
+/// helpers make them), so it holds whatever the bodies' poses; its BodyId and JointId members
+/// are not used: a scene names bodies and joints by index.
+struct SceneJoint {
+  JointDef def;            ///< the kind and its settings
+  std::size_t body_a = 0;  ///< index into SceneDef::bodies (unused by gears)
+  std::size_t body_b = 0;  ///< index into SceneDef::bodies (unused by gears)
+  std::size_t joint1 = 0;  ///< gears: index into SceneDef::joints, of an earlier joint
+  std::size_t joint2 = 0;  ///< gears: index into SceneDef::joints, of an earlier joint
 };
 
-/// @brief A world with the scene's settings, bodies and shapes; bodies defined asleep stay
-/// asleep.
-/// @throws InvalidArgumentError (or a hull error) for a bad definition, as World and
-/// World::create_shape would.
+/// A scene is plain data: world settings plus body definitions with their shapes, and joints
+/// between the bodies, so it can be written to and read from files. Bodies are created in
+/// order, then joints in order.
+struct SceneDef {
+  WorldDef world;                  ///< world settings
+  std::vector<SceneBody> bodies;   ///< created in order
+  std::vector<SceneJoint> joints;  ///< created in order, after every body
+};
+
+/// @brief A world with the scene's settings, bodies, shapes and joints; bodies defined asleep
+/// stay asleep.
+/// @throws InvalidArgumentError (or a hull error) for a bad definition, as World,
+/// World::create_shape and World::create_joint would, and for a joint naming a body or joint
+/// the scene does not have ("joints[3].body_b: no body 12").
 World build_world(const SceneDef& scene);
 
 /// @brief The current state of a world as a scene: every live body (slot order) with its pose,
 /// velocities and settings, each shape in its own kind (a polygon as its hull's vertices, a
-/// chain as one chain shape). build_world(capture_scene(w)) recreates the bodies where they
-/// are now (contact impulses are not kept).
+/// chain as one chain shape), and every live joint with its current settings (slot order, but
+/// gears after the joints they couple). build_world(capture_scene(w)) recreates the bodies
+/// where they are now and the same joints (contact and joint impulses are not kept).
 SceneDef capture_scene(const World& world);
 
-/// @brief Built-in scenes: large_pyramid, pyramid, many_pyramids, rain, tumbler, paper, shapes.
+/// @brief Where build_world creates body `index` of the scene: its defined position and angle.
+/// @throws InvalidArgumentError for an index past the scene's bodies.
+Pose scene_body_pose(const SceneDef& scene, std::size_t index);
+
+/// @brief Built-in scenes: large_pyramid, pyramid, many_pyramids, rain, tumbler, paper, shapes,
+/// pendulum, chain, bridge, ragdolls, car, newtons_cradle.
 std::span<const std::string_view> builtin_scene_names() noexcept;
 /// @brief The built-in scene of that name (see builtin_scene_names).
 /// @throws InvalidArgumentError naming an unknown scene.

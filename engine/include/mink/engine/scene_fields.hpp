@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -10,6 +11,7 @@
 
 #include "mink/engine/body_def.hpp"
 #include "mink/engine/filter.hpp"
+#include "mink/engine/scene.hpp"
 #include "mink/engine/shape_def.hpp"
 #include "mink/engine/world_def.hpp"
 
@@ -65,6 +67,11 @@ struct SceneField {
   /// this returns true: elsewhere the reader refuses it and the writer leaves it out.
   bool (*applies)(const Object&) = nullptr;
   std::string_view applies_to;  ///< which objects `applies` accepts, e.g. "polygon shapes"
+  /// Null for a key that always has a value. Otherwise an optional key, absent by default
+  /// (the docs say "none"): the writer writes it only where this returns true, and reading
+  /// it turns on what it sets (a joint limit, a break threshold); never true for a read-only
+  /// key.
+  bool (*present)(const Object&) = nullptr;
 };
 
 /// @brief A shape's geometry written as one nested object (`"circle": {...}`): the key, the
@@ -89,6 +96,27 @@ struct SceneRegularPolygon {
   Vec2 center{0, 0};       ///< body-local
 };
 
+/// A `joints` entry as its table reads and writes it: the scene's joint (body-local), and the
+/// read-only world-frame keys, which the reader turns into the joint's body-local anchors and
+/// axis with the bodies' defined poses once every key is read.
+struct SceneJointRecord {
+  SceneJoint joint;              ///< what the entry makes
+  std::optional<Vec2> anchor;    ///< "anchor": world point on both bodies
+  std::optional<Vec2> anchor_a;  ///< "anchor_a": world point on body A
+  std::optional<Vec2> anchor_b;  ///< "anchor_b": world point on body B
+  std::optional<Vec2> axis;      ///< "axis": world direction, any length but 0
+};
+
+/// A joint's setting written as one nested object (`"motor": {...}`), on the kinds that have
+/// it; giving the object turns the setting on unless it says `"enabled": false`.
+struct SceneJointPart {
+  std::string_view key;                                  ///< "motor", "spring"
+  bool (*applies)(const SceneJointRecord&) = nullptr;    ///< the kinds that have it
+  std::string_view applies_to;                           ///< those kinds, for messages
+  void (*enable)(SceneJointRecord&) = nullptr;           ///< what giving the object does
+  std::span<const SceneField<SceneJointRecord>> fields;  ///< the nested object's keys
+};
+
 /// @brief The `world` object: every WorldDef setting.
 std::span<const SceneField<WorldDef>> world_fields() noexcept;
 /// @brief A body's keys (BodyDef) other than `shapes`.
@@ -102,6 +130,10 @@ std::span<const SceneField<Filter>> filter_fields() noexcept;
 std::span<const SceneField<ShapeScale>> scale_fields() noexcept;
 /// @brief The nested geometry objects the writer writes: circle, capsule, segment, chain.
 std::span<const SceneShapeForm> shape_forms() noexcept;
+/// @brief A joint's keys other than its nested parts (`type` first: the others depend on it).
+std::span<const SceneField<SceneJointRecord>> joint_fields() noexcept;
+/// @brief A joint's nested objects: motor, spring.
+std::span<const SceneJointPart> joint_parts() noexcept;
 /// @brief The `box` helper's object.
 std::span<const SceneField<SceneBox>> box_fields() noexcept;
 /// @brief The `polygon` helper's object.

@@ -35,7 +35,8 @@ SceneDef parse_scene_json(std::string_view text, const std::string& source = "sc
 SceneDef load_scene_file(const std::filesystem::path& path);
 
 /// @brief Every field of every object, each shape in its own kind's form, doubles in shortest
-/// round-trip form: parse_scene_json(scene_to_json(s)) gives back exactly `s`.
+/// round-trip form: parse_scene_json(scene_to_json(s)) gives back exactly `s` (but for the
+/// bounds of a joint limit that is off, which are not written). Joints are written body-local.
 std::string scene_to_json(const SceneDef& scene);
 /// @brief Writes scene_to_json(scene), creating the parent directories.
 /// @throws OutputError (the environment failed) when the directory or file cannot be written
