@@ -407,27 +407,6 @@ namespace {
 
 // ---- Built-in scenes with joints ----
 
-// True when the kind's solver works in this build (the kinds come from separate branches): a
-// ball hung on such a joint from a static body stays near where it hangs.
-bool kind_holds(JointType type) {
-  World world;
-  const BodyId ground = world.create_body({});
-  BodyDef def;
-  def.type = BodyType::dynamic;
-  def.position = Vec2(0, -1);
-  const BodyId ball = world.create_body(def);
-  world.create_shape(ball, ShapeDef::circle(0.1));
-  if (type == JointType::distance) {
-    world.create_joint(distance_joint_at(world, ground, ball, Vec2(0, 0), Vec2(0, -1)));
-  } else if (type == JointType::wheel) {
-    world.create_joint(wheel_joint_at(world, ground, ball, Vec2(0, -1), Vec2(0, 1)));
-  } else {
-    ADD_FAILURE() << "no hanging test for " << to_string(type);
-  }
-  for (int i = 0; i < 60; ++i) world.step();
-  return (world.position(ball) - Vec2(0, -1)).norm() < 0.5;
-}
-
 // Largest gap between the two anchors of the world's revolute joints: 0 when all hold.
 Real widest_revolute_gap(const World& world) {
   Real widest = 0;
@@ -455,7 +434,7 @@ TEST(JointScenes, EveryBuiltinRuns600StepsWithoutNaN) {
 }
 
 // The first pendulum (3 m, started 1 rad out) swings from one side to the other on its rigid
-// pin; the rigid distance pendulum keeps its length, where distance joints are solved.
+// pin; the rigid distance pendulum keeps its length.
 TEST(JointScenes, PendulumsSwingOnTheirJoints) {
   const SceneDef scene = builtin_scene("pendulum");
   World world = build_world(scene);
@@ -473,7 +452,6 @@ TEST(JointScenes, PendulumsSwingOnTheirJoints) {
   ASSERT_FALSE(rope.is_null());
   const Vec2 rope_anchor = world.joint_anchor_a(rope);
   const Real rope_length = (world.joint_anchor_b(rope) - rope_anchor).norm();
-  const bool ropes = kind_holds(JointType::distance);
   Real left = 0, right = 0, worst_rod = 0, worst_rope = 0;
   for (int i = 0; i < 600; ++i) {
     world.step();
@@ -488,9 +466,7 @@ TEST(JointScenes, PendulumsSwingOnTheirJoints) {
   EXPECT_LT(left, -2.0);
   EXPECT_LT(worst_rod, 0.02);
   EXPECT_LT(widest_revolute_gap(world), 0.02);
-  if (ropes) {
-    EXPECT_LT(worst_rope, 0.05);
-  }
+  EXPECT_LT(worst_rope, 0.05);
 }
 
 // The chain falls from level and hangs below its pin, its links still pinned together, the
@@ -552,8 +528,7 @@ TEST(JointScenes, RagdollsKeepTheirJointsAndParts) {
   }
 }
 
-TEST(JointScenes, CarDrivesRightWhereWheelJointsAreSolved) {
-  if (!kind_holds(JointType::wheel)) GTEST_SKIP() << "wheel joints are not solved in this build";
+TEST(JointScenes, CarDrivesRightOnItsWheelJoints) {
   World world = build_world(builtin_scene("car"));
   const BodyId chassis = world.joint_body_a(world.joints()[0]);
   const Real start = world.position(chassis).x();
@@ -562,10 +537,7 @@ TEST(JointScenes, CarDrivesRightWhereWheelJointsAreSolved) {
   EXPECT_GT(world.position(chassis).y(), -0.5);
 }
 
-TEST(JointScenes, NewtonsCradlePassesTheBlowWhereDistanceJointsAreSolved) {
-  if (!kind_holds(JointType::distance)) {
-    GTEST_SKIP() << "distance joints are not solved in this build";
-  }
+TEST(JointScenes, NewtonsCradlePassesTheBlow) {
   World world = build_world(builtin_scene("newtons_cradle"));
   const std::vector<JointId> joints = world.joints();
   ASSERT_EQ(joints.size(), 5u);
