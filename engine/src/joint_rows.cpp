@@ -50,31 +50,6 @@ CurrentAnchors current_anchors(const JointFrame& frame, const SolverBody& a, con
   return c;
 }
 
-void solve_point(SolverBody& a, SolverBody& b, const JointFrame& frame, bool use_bias,
-                 Vec2& impulse) {
-  const CurrentAnchors c = current_anchors(frame, a, b);
-  const Vec2 cdot = (velocity_of(b) + cross(b.w, c.rb)) - (velocity_of(a) + cross(a.w, c.ra));
-  Vec2 bias{0, 0};
-  Real mass_scale = 1, impulse_scale = 0;
-  if (use_bias) {
-    bias = frame.soft.bias_rate * c.separation;
-    mass_scale = frame.soft.mass_scale;
-    impulse_scale = frame.soft.impulse_scale;
-  }
-  const Real ma = frame.bodies[0].inv_mass, mb = frame.bodies[1].inv_mass;
-  const Real ia = frame.bodies[0].inv_inertia, ib = frame.bodies[1].inv_inertia;
-  const Real k11 = ma + mb + c.ra.y() * c.ra.y() * ia + c.rb.y() * c.rb.y() * ib;
-  const Real k12 = -c.ra.y() * c.ra.x() * ia - c.rb.y() * c.rb.x() * ib;
-  const Real k22 = ma + mb + c.ra.x() * c.ra.x() * ia + c.rb.x() * c.rb.x() * ib;
-  Real det = k11 * k22 - k12 * k12;
-  if (det != 0) det = 1 / det;
-  const Vec2 rhs = cdot + bias;
-  const Vec2 solved(det * (k22 * rhs.x() - k12 * rhs.y()), det * (k11 * rhs.y() - k12 * rhs.x()));
-  const Vec2 p = -mass_scale * solved - impulse_scale * impulse;
-  impulse += p;
-  apply_pair(a, b, frame, c.ra, c.rb, p, 0);
-}
-
 namespace {
 
 // B's anchor's velocity relative to A's.
@@ -83,7 +58,7 @@ Vec2 point_velocity(const CurrentAnchors& c, const SolverBody& a, const SolverBo
 }
 
 // The impulse that changes the anchors' relative velocity by `dv`: K^-1 dv, with K the point
-// row's 2x2 effective mass matrix at the current anchors (as in solve_point).
+// row's 2x2 effective mass matrix at the current anchors.
 Vec2 point_impulse(const JointFrame& frame, const CurrentAnchors& c, const Vec2& dv) {
   const Real ma = frame.bodies[0].inv_mass, mb = frame.bodies[1].inv_mass;
   const Real ia = frame.bodies[0].inv_inertia, ib = frame.bodies[1].inv_inertia;
@@ -96,6 +71,22 @@ Vec2 point_impulse(const JointFrame& frame, const CurrentAnchors& c, const Vec2&
 }
 
 }  // namespace
+
+void solve_point(SolverBody& a, SolverBody& b, const JointFrame& frame, bool use_bias,
+                 Vec2& impulse) {
+  const CurrentAnchors c = current_anchors(frame, a, b);
+  Vec2 bias{0, 0};
+  Real mass_scale = 1, impulse_scale = 0;
+  if (use_bias) {
+    bias = frame.soft.bias_rate * c.separation;
+    mass_scale = frame.soft.mass_scale;
+    impulse_scale = frame.soft.impulse_scale;
+  }
+  const Vec2 solved = point_impulse(frame, c, point_velocity(c, a, b) + bias);
+  const Vec2 p = -mass_scale * solved - impulse_scale * impulse;
+  impulse += p;
+  apply_pair(a, b, frame, c.ra, c.rb, p, 0);
+}
 
 void solve_point_spring(SolverBody& a, SolverBody& b, const JointFrame& frame,
                         const Softness& spring, Vec2& impulse) {

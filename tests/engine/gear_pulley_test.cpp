@@ -9,32 +9,16 @@
 #include <string>
 
 #include "mink/engine/world.hpp"
+#include "test_worlds.hpp"
 
 namespace mink {
 namespace {
 
 constexpr Real kGravity = 10;
 
-WorldDef free_world() {
-  WorldDef def;
-  def.enable_sleep = false;
-  return def;
-}
-
-BodyId add_body(World& world, const Vec2& position, const ShapeDef& shape) {
-  BodyDef def;
-  def.type = BodyType::dynamic;
-  def.position = position;
-  const BodyId body = world.create_body(def);
-  world.create_shape(body, shape);
-  return body;
-}
-
-BodyId add_ball(World& world, const Vec2& position, Real radius, Real density = 1) {
-  ShapeDef shape = ShapeDef::circle(radius);
-  shape.density = density;
-  return add_body(world, position, shape);
-}
+using test::add_ball;
+using test::add_body;
+using test::free_world;
 
 // Two wheels pinned to the ground, the first driven at 1 rad/s; geared with ratio 2 after the
 // first has turned, so the held combination is not 0; run past a full turn (angles count turns).

@@ -28,14 +28,7 @@ WorldDef free_world(bool gravity = true) {
   return def;
 }
 
-BodyId add_ball(World& world, const Vec2& position, Real radius) {
-  BodyDef def;
-  def.type = BodyType::dynamic;
-  def.position = position;
-  const BodyId body = world.create_body(def);
-  world.create_shape(body, ShapeDef::circle(radius));
-  return body;
-}
+using test::add_ball;
 
 // Steps `seconds` and returns the mean time between upward zero crossings of `value`
 // (interpolated within the step), or 0 with fewer than two.

@@ -21,22 +21,8 @@ namespace {
 
 constexpr Real kGravity = 10;
 
-WorldDef free_world() {
-  WorldDef def;
-  def.enable_sleep = false;
-  return def;
-}
-
-BodyId add_ball(World& world, const Vec2& position, Real radius, Real density = 1) {
-  BodyDef def;
-  def.type = BodyType::dynamic;
-  def.position = position;
-  const BodyId body = world.create_body(def);
-  ShapeDef shape = ShapeDef::circle(radius);
-  shape.density = density;
-  world.create_shape(body, shape);
-  return body;
-}
+using test::add_ball;
+using test::free_world;
 
 // Times between upward zero crossings of x (the bob passing the bottom moving right), averaged.
 Real measured_period(World& world, BodyId bob, Real pivot_x, Real seconds) {

@@ -9,6 +9,29 @@
 
 namespace mink::test {
 
+// Default settings with sleeping off, so nothing stops moving under a test's feet.
+inline WorldDef free_world() {
+  WorldDef def;
+  def.enable_sleep = false;
+  return def;
+}
+
+// A dynamic body with one shape.
+inline BodyId add_body(World& world, const Vec2& position, const ShapeDef& shape) {
+  BodyDef def;
+  def.type = BodyType::dynamic;
+  def.position = position;
+  const BodyId body = world.create_body(def);
+  world.create_shape(body, shape);
+  return body;
+}
+
+inline BodyId add_ball(World& world, const Vec2& position, Real radius, Real density = 1) {
+  ShapeDef shape = ShapeDef::circle(radius);
+  shape.density = density;
+  return add_body(world, position, shape);
+}
+
 // A static ground box whose top face is y = 0.
 inline BodyId add_ground(World& world, Real half_width = 50, Real friction = 0.6) {
   const BodyId ground = world.create_body({});
