@@ -163,12 +163,7 @@ std::size_t World::body_count() const noexcept {
 }
 
 std::vector<BodyId> World::bodies() const {
-  std::vector<BodyId> ids;
-  ids.reserve(state_->bodies.live());
-  for (std::uint32_t i = 0; i < state_->bodies.size(); ++i) {
-    if (state_->bodies[i].alive) ids.push_back(state_->body_id(i));
-  }
-  return ids;
+  return state_->bodies.live_ids<BodyId>(state_->serial);
 }
 
 BodyType World::body_type(BodyId id) const {
@@ -365,9 +360,9 @@ void World::set_body_type(BodyId id, BodyType type) {
   // The broadphase files static and moving proxies apart, and contacts depend on the types.
   for (std::uint32_t s : b.shapes) w.refresh_proxy(s);
   for (std::uint32_t s : b.shapes) w.update_seams(s, false);
-  for (std::uint32_t j : b.joints) w.recolor_joint(j);
   for (std::uint32_t j : b.joints) {
-    for (int k = 0; k < w.joints[j].body_count; ++k) w.wake(w.bodies[w.joints[j].body[k]]);
+    w.recolor_joint(j);
+    w.wake_joint_bodies(j);
   }
 }
 

@@ -94,20 +94,36 @@ void WorldState::destroy_contact(std::uint32_t index) {
   contacts.pop_back();
 }
 
+namespace {
+
+// Destroys the contacts of `body` that `doomed` picks, waking their bodies. Highest index
+// first, so the swap-removal never moves a contact still to be visited.
+template <typename Pick>
+void destroy_body_contacts(WorldState& w, std::uint32_t body, Pick doomed) {
+  std::vector<std::uint32_t> picked;
+  for (const std::uint32_t i : w.bodies[body].contacts) {
+    if (doomed(w.contacts[i])) picked.push_back(i);
+  }
+  std::sort(picked.begin(), picked.end(), std::greater<>());
+  for (const std::uint32_t i : picked) {
+    w.wake(w.bodies[w.contacts[i].body_a]);
+    w.wake(w.bodies[w.contacts[i].body_b]);
+    w.destroy_contact(i);
+  }
+}
+
+}  // namespace
+
 void WorldState::destroy_shape_contacts(std::uint32_t shape_index) {
-  // Highest index first, so the swap-removal never moves a contact still to be visited.
-  std::vector<std::uint32_t> doomed;
-  for (const std::uint32_t i : bodies[shapes[shape_index].body].contacts) {
-    if (contacts[i].shape_a == shape_index || contacts[i].shape_b == shape_index) {
-      doomed.push_back(i);
-    }
-  }
-  std::sort(doomed.begin(), doomed.end(), std::greater<>());
-  for (const std::uint32_t i : doomed) {
-    wake(bodies[contacts[i].body_a]);
-    wake(bodies[contacts[i].body_b]);
-    destroy_contact(i);
-  }
+  destroy_body_contacts(*this, shapes[shape_index].body, [&](const Contact& c) {
+    return c.shape_a == shape_index || c.shape_b == shape_index;
+  });
+}
+
+void WorldState::destroy_contacts_between(std::uint32_t body_a, std::uint32_t body_b) {
+  destroy_body_contacts(*this, body_a, [&](const Contact& c) {
+    return (c.body_a == body_a && c.body_b == body_b) || (c.body_a == body_b && c.body_b == body_a);
+  });
 }
 
 // Sensors never make contacts (they are tested in the sensor pass), and neither do two

@@ -12,6 +12,13 @@ namespace mink::detail {
 // `alive` and `generation`; an id type has `index`, `generation` and `world`. Destroying bumps
 // the generation so kept ids go stale; ids name their world so one from another World is
 // refused instead of reaching a slot that happens to exist here too.
+// "KindId{index I, generation G, world W}": how error messages name an id.
+template <typename Id>
+std::string id_string(const char* kind, const Id& id) {
+  return std::string(kind) + "{index " + std::to_string(id.index) + ", generation " +
+         std::to_string(id.generation) + ", world " + std::to_string(id.world) + "}";
+}
+
 template <typename Slot>
 class IdPool {
  public:
@@ -65,6 +72,16 @@ class IdPool {
   auto begin() const noexcept { return slots_.begin(); }
   auto end() const noexcept { return slots_.end(); }
   std::size_t live() const noexcept { return live_; }
+  // Ids of the live slots, in slot order.
+  template <typename Id>
+  std::vector<Id> live_ids(std::uint32_t world) const {
+    std::vector<Id> ids;
+    ids.reserve(live_);
+    for (std::uint32_t i = 0; i < slots_.size(); ++i) {
+      if (slots_[i].alive) ids.push_back({i, slots_[i].generation, world});
+    }
+    return ids;
+  }
 
  private:
   std::vector<Slot> slots_;

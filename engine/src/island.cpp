@@ -10,10 +10,10 @@ using detail::Body;
 using detail::Contact;
 
 // Islands are found from the awake bodies only: a walk over touching contacts and joints
-// between dynamic bodies gathers each island that holds an awake body (sleeping members included, so that they
-// wake with it), and an island of sleeping bodies is never visited: it costs nothing. An island
-// sleeps when all its bodies have been slow for time_to_sleep, and wakes as a whole when any
-// member is moving (woken by the API, hit by an awake body or a moving kinematic body).
+// between dynamic bodies gathers each island that holds an awake body (sleeping members included,
+// so that they wake with it), and an island of sleeping bodies is never visited: it costs nothing.
+// An island sleeps when all its bodies have been slow for time_to_sleep, and wakes as a whole when
+// any member is moving (woken by the API, hit by an awake body or a moving kinematic body).
 void WorldState::update_islands() {
   if (island_stamp.size() < bodies.size()) island_stamp.resize(bodies.size(), ~std::uint64_t{0});
   // A moving kinematic body keeps what it touches awake.
@@ -27,16 +27,6 @@ void WorldState::update_islands() {
     Body& other = a.type == BodyType::kinematic ? b : a;
     if (kinematic.velocity.squaredNorm() > 0 || kinematic.angular_velocity != 0) {
       other.sleep_time = 0;
-    }
-  }
-  // So does a moving kinematic body through a joint.
-  for (const std::uint32_t i : awake_list) {
-    const Body& k = bodies[i];
-    if (k.type != BodyType::kinematic || !k.alive || k.joints.empty()) continue;
-    if (k.velocity.squaredNorm() == 0 && k.angular_velocity == 0) continue;
-    for (const std::uint32_t j : k.joints) {
-      const detail::Joint& joint = joints[j];
-      for (int m = 0; m < joint.body_count; ++m) bodies[joint.body[m]].sleep_time = 0;
     }
   }
   std::size_t islands = 0;
@@ -54,7 +44,7 @@ void WorldState::update_islands() {
       const std::uint32_t i = island_stack.back();
       island_stack.pop_back();
       island_members.push_back(i);
-      const Body& b = bodies[i];
+      Body& b = bodies[i];
       min_sleep = std::min(min_sleep, b.allow_sleep ? b.sleep_time : Real{0});
       const auto reach = [&](std::uint32_t j) {
         const Body& other = bodies[j];
@@ -70,7 +60,16 @@ void WorldState::update_islands() {
       }
       for (const std::uint32_t ji : b.joints) {
         const detail::Joint& joint = joints[ji];
-        for (int m = 0; m < joint.body_count; ++m) reach(joint.body[m]);
+        for (int m = 0; m < joint.body_count; ++m) {
+          const Body& other = bodies[joint.body[m]];
+          // A moving kinematic body keeps what it is jointed to awake, as what it touches.
+          if (other.type == BodyType::kinematic &&
+              (other.velocity.squaredNorm() > 0 || other.angular_velocity != 0)) {
+            b.sleep_time = 0;
+            min_sleep = 0;
+          }
+          reach(joint.body[m]);
+        }
       }
     }
     const bool awake = min_sleep < def.time_to_sleep;

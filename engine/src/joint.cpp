@@ -19,8 +19,7 @@ using detail::Joint;
 using detail::require;
 
 std::string to_string(JointId id) {
-  return "JointId{index " + std::to_string(id.index) + ", generation " +
-         std::to_string(id.generation) + ", world " + std::to_string(id.world) + "}";
+  return detail::id_string("JointId", id);
 }
 
 namespace {
@@ -46,6 +45,11 @@ class DefCheck {
   void unit(const Vec2& v, const char* field) const {
     require(finite(v) && std::abs(v.norm() - 1) < 1e-6,
             what_ + "." + field + " must be a unit vector");
+  }
+  template <typename Def>
+  void anchors(const Def& d) const {
+    finite_point(d.local_anchor_a, "local_anchor_a");
+    finite_point(d.local_anchor_b, "local_anchor_b");
   }
   void motor(const JointMotor& m) const {
     finite_value(m.speed, "motor.speed");
@@ -75,16 +79,14 @@ class DefCheck {
 };
 
 void check_def(const DefCheck& c, const RevoluteJointDef& d) {
-  c.finite_point(d.local_anchor_a, "local_anchor_a");
-  c.finite_point(d.local_anchor_b, "local_anchor_b");
+  c.anchors(d);
   c.finite_value(d.reference_angle, "reference_angle");
   c.limit(d.limit);
   c.motor(d.motor);
   c.spring(d.spring);
 }
 void check_def(const DefCheck& c, const PrismaticJointDef& d) {
-  c.finite_point(d.local_anchor_a, "local_anchor_a");
-  c.finite_point(d.local_anchor_b, "local_anchor_b");
+  c.anchors(d);
   c.unit(d.local_axis_a, "local_axis_a");
   c.finite_value(d.reference_angle, "reference_angle");
   c.limit(d.limit);
@@ -92,8 +94,7 @@ void check_def(const DefCheck& c, const PrismaticJointDef& d) {
   c.spring(d.spring);
 }
 void check_def(const DefCheck& c, const DistanceJointDef& d) {
-  c.finite_point(d.local_anchor_a, "local_anchor_a");
-  c.finite_point(d.local_anchor_b, "local_anchor_b");
+  c.anchors(d);
   c.positive(d.length, "length");
   c.limit(d.limit);
   c.non_negative(d.limit.lower, "limit.lower");
@@ -101,8 +102,7 @@ void check_def(const DefCheck& c, const DistanceJointDef& d) {
   c.spring(d.spring);
 }
 void check_def(const DefCheck& c, const WeldJointDef& d) {
-  c.finite_point(d.local_anchor_a, "local_anchor_a");
-  c.finite_point(d.local_anchor_b, "local_anchor_b");
+  c.anchors(d);
   c.finite_value(d.reference_angle, "reference_angle");
   c.non_negative(d.linear_hertz, "linear_hertz");
   c.non_negative(d.linear_damping_ratio, "linear_damping_ratio");
@@ -110,8 +110,7 @@ void check_def(const DefCheck& c, const WeldJointDef& d) {
   c.non_negative(d.angular_damping_ratio, "angular_damping_ratio");
 }
 void check_def(const DefCheck& c, const WheelJointDef& d) {
-  c.finite_point(d.local_anchor_a, "local_anchor_a");
-  c.finite_point(d.local_anchor_b, "local_anchor_b");
+  c.anchors(d);
   c.unit(d.local_axis_a, "local_axis_a");
   c.limit(d.limit);
   c.motor(d.motor);
@@ -133,8 +132,7 @@ void check_def(const DefCheck& c, const GearJointDef& d) {
 void check_def(const DefCheck& c, const PulleyJointDef& d) {
   c.finite_point(d.ground_anchor_a, "ground_anchor_a");
   c.finite_point(d.ground_anchor_b, "ground_anchor_b");
-  c.finite_point(d.local_anchor_a, "local_anchor_a");
-  c.finite_point(d.local_anchor_b, "local_anchor_b");
+  c.anchors(d);
   c.positive(d.length_a, "length_a");
   c.positive(d.length_b, "length_b");
   c.positive(d.ratio, "ratio");
@@ -156,10 +154,6 @@ detail::JointKind make_kind(const JointDef& def) {
   std::variant_alternative_t<I, detail::JointKind> kind;
   kind.def = std::get<I>(def);
   return kind;
-}
-
-void wake_bodies(WorldState& w, const Joint& joint) {
-  for (int k = 0; k < joint.body_count; ++k) w.wake(w.bodies[joint.body[k]]);
 }
 
 }  // namespace
@@ -198,14 +192,8 @@ JointId World::create_joint(const JointDef& def) {
     gear->def.body_b = w.body_id(joint.body[1]);
     // It follows its joints' coordinates from their definitions, and holds their sum as now.
     for (std::size_t g = 0; g < 2; ++g) {
-      const Joint& geared = w.joints[joint.gear_joints[g]];
-      const detail::JointBodyState a = w.joint_body_state(geared.body[0]);
-      const detail::JointBodyState b = w.joint_body_state(geared.body[1]);
-      const Real value =
-          std::visit([&](const auto& k) { return detail::coordinate(k, a, b); }, geared.kind);
-      detail::attach(*gear, g,
-                     std::visit([](const auto& k) -> JointDef { return k.def; }, geared.kind),
-                     value);
+      const std::uint32_t geared = joint.gear_joints[g];
+      detail::attach(*gear, g, detail::def_of(w.joints[geared]), w.joint_coordinate(geared));
     }
   }
 
@@ -224,26 +212,12 @@ JointId World::create_joint(const JointDef& def) {
   const detail::JointBodyState sa = w.joint_body_state(slot.body[0]);
   const detail::JointBodyState sb = w.joint_body_state(slot.body[1]);
   std::visit([&](auto& k) { detail::finish(k, sa, sb); }, slot.kind);
-  if (auto* revolute = std::get_if<detail::RevoluteJoint>(&slot.kind)) {
-    revolute->angle = detail::wrap_angle(revolute->angle);
-  }
   w.recolor_joint(index);
   // Shapes of bodies that may no longer collide stop doing so at once.
   if (!b.collide_connected && slot.body_count == 2) {
-    Body& body_a = w.bodies[slot.body[0]];
-    std::vector<std::uint32_t> doomed;
-    for (const std::uint32_t ci : body_a.contacts) {
-      const detail::Contact& c = w.contacts[ci];
-      if ((c.body_a == slot.body[0] && c.body_b == slot.body[1]) ||
-          (c.body_a == slot.body[1] && c.body_b == slot.body[0])) {
-        doomed.push_back(ci);
-      }
-    }
-    // Highest first: destroying a contact may move the last one into its place.
-    std::sort(doomed.rbegin(), doomed.rend());
-    for (const std::uint32_t ci : doomed) w.destroy_contact(ci);
+    w.destroy_contacts_between(slot.body[0], slot.body[1]);
   }
-  wake_bodies(w, slot);
+  w.wake_joint_bodies(index);
   return w.joint_id(index);
 }
 
@@ -308,6 +282,25 @@ detail::JointBodyState WorldState::joint_body_state(std::uint32_t index) const {
   return {b.pose(), b.center, b.velocity, b.angular_velocity};
 }
 
+Real WorldState::joint_coordinate(std::uint32_t index) const {
+  const Joint& j = joints[index];
+  const detail::JointBodyState a = joint_body_state(j.body[0]);
+  const detail::JointBodyState b = joint_body_state(j.body[1]);
+  return std::visit([&](const auto& k) { return detail::coordinate(k, a, b); }, j.kind);
+}
+
+Real WorldState::joint_speed(std::uint32_t index) const {
+  const Joint& j = joints[index];
+  const detail::JointBodyState a = joint_body_state(j.body[0]);
+  const detail::JointBodyState b = joint_body_state(j.body[1]);
+  return std::visit([&](const auto& k) { return detail::speed(k, a, b); }, j.kind);
+}
+
+void WorldState::wake_joint_bodies(std::uint32_t index) {
+  const Joint& joint = joints[index];
+  for (int k = 0; k < joint.body_count; ++k) wake(bodies[joint.body[k]]);
+}
+
 void World::destroy_joint(JointId id) {
   state_->joint(id);
   state_->destroy_joint(id.index);
@@ -322,11 +315,7 @@ std::size_t World::joint_count() const noexcept {
 }
 
 std::vector<JointId> World::joints() const {
-  std::vector<JointId> ids;
-  for (std::uint32_t i = 0; i < state_->joints.size(); ++i) {
-    if (state_->joints[i].alive) ids.push_back(state_->joint_id(i));
-  }
-  return ids;
+  return state_->joints.live_ids<JointId>(state_->serial);
 }
 
 std::vector<JointId> World::body_joints(BodyId id) const {
@@ -342,7 +331,7 @@ JointType World::joint_type(JointId id) const {
 }
 
 JointDef World::joint_def(JointId id) const {
-  return std::visit([](const auto& k) -> JointDef { return k.def; }, state_->joint(id).kind);
+  return detail::def_of(state_->joint(id));
 }
 
 BodyId World::joint_body_a(JointId id) const {
@@ -385,16 +374,12 @@ Real World::joint_torque(JointId id) const {
 }
 
 Real World::joint_coordinate(JointId id) const {
-  const Joint& j = state_->joint(id);
-  const detail::JointBodyState a = state_->joint_body_state(j.body[0]);
-  const detail::JointBodyState b = state_->joint_body_state(j.body[1]);
-  return std::visit([&](const auto& k) { return detail::coordinate(k, a, b); }, j.kind);
+  state_->joint(id);
+  return state_->joint_coordinate(id.index);
 }
 Real World::joint_speed(JointId id) const {
-  const Joint& j = state_->joint(id);
-  const detail::JointBodyState a = state_->joint_body_state(j.body[0]);
-  const detail::JointBodyState b = state_->joint_body_state(j.body[1]);
-  return std::visit([&](const auto& k) { return detail::speed(k, a, b); }, j.kind);
+  state_->joint(id);
+  return state_->joint_speed(id.index);
 }
 
 namespace {
@@ -459,7 +444,7 @@ void World::set_joint_motor(JointId id, const JointMotor& motor) {
   JointMotor& m = motor_of(j, id, "set_joint_motor");
   DefCheck("set_joint_motor of " + to_string(id)).motor(motor);
   m = motor;
-  wake_bodies(*state_, j);
+  state_->wake_joint_bodies(id.index);
 }
 
 JointSpring World::joint_spring(JointId id) const {
@@ -470,7 +455,7 @@ void World::set_joint_spring(JointId id, const JointSpring& spring) {
   JointSpring& s = spring_of(j, id, "set_joint_spring");
   DefCheck("set_joint_spring of " + to_string(id)).spring(spring);
   s = spring;
-  wake_bodies(*state_, j);
+  state_->wake_joint_bodies(id.index);
 }
 
 JointLimit World::joint_limit(JointId id) const {
@@ -483,7 +468,7 @@ void World::set_joint_limit(JointId id, const JointLimit& limit) {
   check.limit(limit);
   if (detail::type_of(j) == JointType::distance) check.non_negative(limit.lower, "limit.lower");
   l = limit;
-  wake_bodies(*state_, j);
+  state_->wake_joint_bodies(id.index);
 }
 
 void World::set_distance_length(JointId id, Real length) {
@@ -491,7 +476,7 @@ void World::set_distance_length(JointId id, Real length) {
   auto& k = kind_of<detail::DistanceJoint>(j, id, "set_distance_length", JointType::distance);
   DefCheck("set_distance_length of " + to_string(id)).positive(length, "length");
   k.def.length = length;
-  wake_bodies(*state_, j);
+  state_->wake_joint_bodies(id.index);
 }
 
 void World::set_motor_target(JointId id, const Vec2& linear_offset, Real angular_offset) {
@@ -502,7 +487,7 @@ void World::set_motor_target(JointId id, const Vec2& linear_offset, Real angular
   check.finite_value(angular_offset, "angular_offset");
   k.def.linear_offset = linear_offset;
   k.def.angular_offset = angular_offset;
-  wake_bodies(*state_, j);
+  state_->wake_joint_bodies(id.index);
 }
 
 void World::set_motor_limits(JointId id, Real max_force, Real max_torque) {
@@ -513,7 +498,7 @@ void World::set_motor_limits(JointId id, Real max_force, Real max_torque) {
   check.non_negative(max_torque, "max_torque");
   k.def.max_force = max_force;
   k.def.max_torque = max_torque;
-  wake_bodies(*state_, j);
+  state_->wake_joint_bodies(id.index);
 }
 
 void World::set_weld_springs(JointId id, Real linear_hertz, Real linear_damping_ratio,
@@ -527,7 +512,7 @@ void World::set_weld_springs(JointId id, Real linear_hertz, Real linear_damping_
   d.angular_damping_ratio = angular_damping_ratio;
   check_def(DefCheck("set_weld_springs of " + to_string(id)), d);
   k.def = d;
-  wake_bodies(*state_, j);
+  state_->wake_joint_bodies(id.index);
 }
 
 void World::set_joint_break(JointId id, Real force, Real torque) {

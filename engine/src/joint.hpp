@@ -35,6 +35,10 @@ inline const JointBase& base(const Joint& joint) {
 inline JointBase& base(Joint& joint) {
   return std::visit([](auto& k) -> JointBase& { return k.def; }, joint.kind);
 }
+// The joint's settings as its kind's definition.
+inline JointDef def_of(const Joint& joint) {
+  return std::visit([](const auto& k) -> JointDef { return k.def; }, joint.kind);
+}
 inline JointType type_of(const Joint& joint) {
   return static_cast<JointType>(joint.kind.index());
 }

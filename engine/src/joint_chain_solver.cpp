@@ -30,7 +30,8 @@ Mat2 coupling(const JointBody& b, const Vec2& r1, const Vec2& r2) {
 
 }  // namespace
 
-void JointChainSolver::build(IdPool<Joint>& joints, const std::vector<std::uint32_t>& order) {
+void JointChainSolver::build(IdPool<Joint>& joints, const std::vector<std::uint32_t>& order,
+                             bool enabled) {
   path_begin_.clear();
   chain_joints_.clear();
   next_side_.clear();
@@ -44,6 +45,7 @@ void JointChainSolver::build(IdPool<Joint>& joints, const std::vector<std::uint3
     auto* revolute = std::get_if<RevoluteJoint>(&joint.kind);
     if (revolute == nullptr) continue;
     revolute->direct = false;
+    if (!enabled) continue;
     const JointFrame& f = joint.frame;
     if (!movable(f.bodies[0]) && !movable(f.bodies[1])) continue;
     candidates.push_back(j);

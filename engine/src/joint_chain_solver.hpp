@@ -20,8 +20,9 @@ namespace mink::detail {
 // Their other rows (springs, motors, limits) and every other joint stay one at a time.
 class JointChainSolver {
  public:
-  // Finds the paths among `order`'s revolute joints and marks their joints as solved here.
-  void build(IdPool<Joint>& joints, const std::vector<std::uint32_t>& order);
+  // Finds the paths among `order`'s revolute joints and marks their joints as solved here
+  // (none when not `enabled`: every revolute then solves its own point row).
+  void build(IdPool<Joint>& joints, const std::vector<std::uint32_t>& order, bool enabled);
   void solve(IdPool<Joint>& joints, SolverBody* bodies, bool use_bias);
   std::size_t chained_joints() const { return chain_joints_.size(); }
 

@@ -34,11 +34,14 @@ JointType joint_type(const JointDef& def) noexcept {
 
 namespace {
 
+// A definition joining a and b with its anchors at world points, taken in each body's frame.
 template <typename Def>
-Def joined(BodyId a, BodyId b) {
+Def anchored(const World& world, BodyId a, BodyId b, const Vec2& anchor_a, const Vec2& anchor_b) {
   Def def;
   def.body_a = a;
   def.body_b = b;
+  def.local_anchor_a = world.pose(a).apply_inverse(anchor_a);
+  def.local_anchor_b = world.pose(b).apply_inverse(anchor_b);
   return def;
 }
 
@@ -46,56 +49,53 @@ Real relative_angle(const World& world, BodyId a, BodyId b) {
   return world.angle(b) - world.angle(a);
 }
 
+// A world direction as a unit vector in a's frame (a zero vector stays zero and is refused
+// by create_joint).
+Vec2 local_axis(const World& world, BodyId a, const Vec2& axis) {
+  const Real length = axis.norm();
+  return world.pose(a).rotation.apply_inverse(length > 0 ? Vec2(axis / length) : axis);
+}
+
 }  // namespace
 
 RevoluteJointDef revolute_joint_at(const World& world, BodyId a, BodyId b, const Vec2& anchor) {
-  auto def = joined<RevoluteJointDef>(a, b);
-  def.local_anchor_a = world.pose(a).apply_inverse(anchor);
-  def.local_anchor_b = world.pose(b).apply_inverse(anchor);
+  auto def = anchored<RevoluteJointDef>(world, a, b, anchor, anchor);
   def.reference_angle = relative_angle(world, a, b);
   return def;
 }
 
 PrismaticJointDef prismatic_joint_at(const World& world, BodyId a, BodyId b, const Vec2& anchor,
                                      const Vec2& axis) {
-  auto def = joined<PrismaticJointDef>(a, b);
-  def.local_anchor_a = world.pose(a).apply_inverse(anchor);
-  def.local_anchor_b = world.pose(b).apply_inverse(anchor);
-  const Real length = axis.norm();
-  def.local_axis_a = world.pose(a).rotation.apply_inverse(length > 0 ? Vec2(axis / length) : axis);
+  auto def = anchored<PrismaticJointDef>(world, a, b, anchor, anchor);
+  def.local_axis_a = local_axis(world, a, axis);
   def.reference_angle = relative_angle(world, a, b);
   return def;
 }
 
 DistanceJointDef distance_joint_at(const World& world, BodyId a, BodyId b, const Vec2& anchor_a,
                                    const Vec2& anchor_b) {
-  auto def = joined<DistanceJointDef>(a, b);
-  def.local_anchor_a = world.pose(a).apply_inverse(anchor_a);
-  def.local_anchor_b = world.pose(b).apply_inverse(anchor_b);
+  auto def = anchored<DistanceJointDef>(world, a, b, anchor_a, anchor_b);
   def.length = (anchor_b - anchor_a).norm();
   return def;
 }
 
 WeldJointDef weld_joint_at(const World& world, BodyId a, BodyId b, const Vec2& anchor) {
-  auto def = joined<WeldJointDef>(a, b);
-  def.local_anchor_a = world.pose(a).apply_inverse(anchor);
-  def.local_anchor_b = world.pose(b).apply_inverse(anchor);
+  auto def = anchored<WeldJointDef>(world, a, b, anchor, anchor);
   def.reference_angle = relative_angle(world, a, b);
   return def;
 }
 
 WheelJointDef wheel_joint_at(const World& world, BodyId a, BodyId b, const Vec2& anchor,
                              const Vec2& axis) {
-  auto def = joined<WheelJointDef>(a, b);
-  def.local_anchor_a = world.pose(a).apply_inverse(anchor);
-  def.local_anchor_b = world.pose(b).apply_inverse(anchor);
-  const Real length = axis.norm();
-  def.local_axis_a = world.pose(a).rotation.apply_inverse(length > 0 ? Vec2(axis / length) : axis);
+  auto def = anchored<WheelJointDef>(world, a, b, anchor, anchor);
+  def.local_axis_a = local_axis(world, a, axis);
   return def;
 }
 
 MotorJointDef motor_joint_at(const World& world, BodyId a, BodyId b) {
-  auto def = joined<MotorJointDef>(a, b);
+  MotorJointDef def;
+  def.body_a = a;
+  def.body_b = b;
   def.linear_offset = world.pose(a).apply_inverse(world.position(b));
   def.angular_offset = relative_angle(world, a, b);
   return def;
@@ -104,11 +104,9 @@ MotorJointDef motor_joint_at(const World& world, BodyId a, BodyId b) {
 PulleyJointDef pulley_joint_at(const World& world, BodyId a, BodyId b, const Vec2& ground_a,
                                const Vec2& ground_b, const Vec2& anchor_a, const Vec2& anchor_b,
                                Real ratio) {
-  auto def = joined<PulleyJointDef>(a, b);
+  auto def = anchored<PulleyJointDef>(world, a, b, anchor_a, anchor_b);
   def.ground_anchor_a = ground_a;
   def.ground_anchor_b = ground_b;
-  def.local_anchor_a = world.pose(a).apply_inverse(anchor_a);
-  def.local_anchor_b = world.pose(b).apply_inverse(anchor_b);
   def.length_a = (anchor_a - ground_a).norm();
   def.length_b = (anchor_b - ground_b).norm();
   def.ratio = ratio;

@@ -82,22 +82,13 @@ void WorldState::prepare_joints() {
     }
     if (joint.body_count == 4) {
       // A gear reads its joints' coordinates as the step begins.
-      for (int g = 0; g < 2; ++g) {
-        const Joint& geared = joints[joint.gear_joints[static_cast<std::size_t>(g)]];
-        const detail::JointBodyState a = joint_body_state(geared.body[0]);
-        const detail::JointBodyState b = joint_body_state(geared.body[1]);
-        const Real value =
-            std::visit([&](const auto& k) { return detail::coordinate(k, a, b); }, geared.kind);
-        (g == 0 ? frame.coordinate_a : frame.coordinate_b) = value;
-      }
+      frame.coordinate_a = joint_coordinate(joint.gear_joints[0]);
+      frame.coordinate_b = joint_coordinate(joint.gear_joints[1]);
     }
     std::visit([&](auto& k) { detail::prepare(k, frame); }, joint.kind);
   }
   joint_stages.set(&joints, &step_joints);
-  if (def.direct_joint_chains)
-    joint_stages.chains().build(joints, step_joints);
-  else
-    joint_stages.chains().build(joints, {});
+  joint_stages.chains().build(joints, step_joints, def.direct_joint_chains);
 }
 
 void WorldState::finish_joints() {

@@ -18,13 +18,11 @@ using detail::finite;
 using detail::require;
 
 std::string to_string(BodyId id) {
-  return "BodyId{index " + std::to_string(id.index) + ", generation " +
-         std::to_string(id.generation) + ", world " + std::to_string(id.world) + "}";
+  return detail::id_string("BodyId", id);
 }
 
 std::string to_string(ShapeId id) {
-  return "ShapeId{index " + std::to_string(id.index) + ", generation " +
-         std::to_string(id.generation) + ", world " + std::to_string(id.world) + "}";
+  return detail::id_string("ShapeId", id);
 }
 
 namespace {

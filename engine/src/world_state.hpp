@@ -74,8 +74,8 @@ struct WorldState {
   std::vector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
   std::vector<detail::ConstraintBodies> constraint_bodies, sorted_bodies;
   detail::ContactSolver contact_solver;
-  std::int32_t still_body = 0;              // the solver body standing in for the unmoving
-  std::vector<std::uint32_t> step_joints;   // joints of moving bodies this step, solve order
+  std::int32_t still_body = 0;             // the solver body standing in for the unmoving
+  std::vector<std::uint32_t> step_joints;  // joints of moving bodies this step, solve order
   detail::JointStages joint_stages;
   std::vector<std::uint64_t> island_stamp;  // per body: the step whose island pass reached it
   std::vector<std::uint32_t> island_stack, island_members, woken;
@@ -115,6 +115,7 @@ struct WorldState {
   void update_color(std::uint32_t contact_index);
   void assign_new_colors();
   void destroy_shape_contacts(std::uint32_t shape_index);
+  void destroy_contacts_between(std::uint32_t body_a, std::uint32_t body_b);
   bool should_make_contact(std::uint32_t shape_a, std::uint32_t shape_b) const;
   void update_pairs();
   void collide();
@@ -130,6 +131,10 @@ struct WorldState {
   // True when a joint between the two bodies keeps their shapes from colliding.
   bool joint_prevents_contact(std::uint32_t body_a, std::uint32_t body_b) const;
   detail::JointBodyState joint_body_state(std::uint32_t body) const;
+  // The joint's free coordinate and its rate now (World::joint_coordinate, joint_speed).
+  Real joint_coordinate(std::uint32_t index) const;
+  Real joint_speed(std::uint32_t index) const;
+  void wake_joint_bodies(std::uint32_t index);
   // joint_solver.cpp
   void prepare_joints();
   void finish_joints();
