@@ -75,8 +75,6 @@ JointReaction reaction(const DistanceJoint& joint, const JointFrame& frame) {
   return {frame.inv_h * total * axis, 0};
 }
 
-void finish(DistanceJoint&, const JointBodyState&, const JointBodyState&) {}
-
 Real coordinate(const DistanceJoint& joint, const JointBodyState& a, const JointBodyState& b) {
   return anchor_offset(joint, a, b).norm();
 }

@@ -169,7 +169,6 @@ JointReaction reaction(const GearJoint& joint, const JointFrame& frame) {
 }
 
 // Nothing to settle: the relax pass recorded the value and rate.
-void finish(GearJoint&, const JointBodyState&, const JointBodyState&) {}
 
 // The gear's two bodies (the joints' B bodies) are not enough to measure either joint's
 // coordinate, so this is the value the last solved step left (or the value at creation): it

@@ -41,7 +41,6 @@ void prepare(GearJoint& joint, JointFrame& frame);
 void warm_start(const GearJoint& joint, const JointFrame& frame, SolverBody* bodies);
 void solve(GearJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias);
 JointReaction reaction(const GearJoint& joint, const JointFrame& frame);
-void finish(GearJoint& joint, const JointBodyState& a, const JointBodyState& b);
 Real coordinate(const GearJoint& joint, const JointBodyState& a, const JointBodyState& b);
 Real speed(const GearJoint& joint, const JointBodyState& a, const JointBodyState& b);
 void draw(const GearJoint& joint, const JointBodyState& a, const JointBodyState& b,

@@ -211,7 +211,7 @@ JointId World::create_joint(const JointDef& def) {
   // Settled state: a revolute's angle counts from where the bodies are now.
   const detail::JointBodyState sa = w.joint_body_state(slot.body[0]);
   const detail::JointBodyState sb = w.joint_body_state(slot.body[1]);
-  std::visit([&](auto& k) { detail::finish(k, sa, sb); }, slot.kind);
+  std::visit([&](auto& k) { detail::finish_kind(k, sa, sb); }, slot.kind);
   w.recolor_joint(index);
   // Shapes of bodies that may no longer collide stop doing so at once.
   if (!b.collide_connected && slot.body_count == 2) {
@@ -286,14 +286,14 @@ Real WorldState::joint_coordinate(std::uint32_t index) const {
   const Joint& j = joints[index];
   const detail::JointBodyState a = joint_body_state(j.body[0]);
   const detail::JointBodyState b = joint_body_state(j.body[1]);
-  return std::visit([&](const auto& k) { return detail::coordinate(k, a, b); }, j.kind);
+  return std::visit([&](const auto& k) { return detail::coordinate_of(k, a, b); }, j.kind);
 }
 
 Real WorldState::joint_speed(std::uint32_t index) const {
   const Joint& j = joints[index];
   const detail::JointBodyState a = joint_body_state(j.body[0]);
   const detail::JointBodyState b = joint_body_state(j.body[1]);
-  return std::visit([&](const auto& k) { return detail::speed(k, a, b); }, j.kind);
+  return std::visit([&](const auto& k) { return detail::speed_of(k, a, b); }, j.kind);
 }
 
 void WorldState::wake_joint_bodies(std::uint32_t index) {

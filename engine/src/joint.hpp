@@ -28,6 +28,29 @@ struct Joint {
   JointReaction reaction;  // of the last step it was solved in
 };
 
+// A kind's end-of-step bookkeeping, free coordinate and its rate: kinds without one (a weld,
+// a motor joint) leave the function out and read 0.
+template <typename Kind>
+void finish_kind(Kind& kind, const JointBodyState& a, const JointBodyState& b) {
+  if constexpr (requires { finish(kind, a, b); }) finish(kind, a, b);
+}
+template <typename Kind>
+Real coordinate_of(const Kind& kind, const JointBodyState& a, const JointBodyState& b) {
+  if constexpr (requires { coordinate(kind, a, b); }) {
+    return coordinate(kind, a, b);
+  } else {
+    return 0;
+  }
+}
+template <typename Kind>
+Real speed_of(const Kind& kind, const JointBodyState& a, const JointBodyState& b) {
+  if constexpr (requires { speed(kind, a, b); }) {
+    return speed(kind, a, b);
+  } else {
+    return 0;
+  }
+}
+
 // The settings every kind shares.
 inline const JointBase& base(const Joint& joint) {
   return std::visit([](const auto& k) -> const JointBase& { return k.def; }, joint.kind);

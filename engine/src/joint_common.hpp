@@ -131,6 +131,15 @@ inline Real slider_speed(const JointBodyState& a, const JointBodyState& b,
   return (pb - pa).dot(cross(a.angular_velocity, axis)) + axis.dot(vb - va);
 }
 
+// Each body's anchor, tied to its centre of mass (the drawing every anchored kind starts from).
+inline void draw_anchors(DebugDraw& draw, const JointBodyState& a, const JointBodyState& b,
+                         const Vec2& pa, const Vec2& pb) {
+  draw.draw_segment(a.center, pa, kJointColor);
+  draw.draw_segment(b.center, pb, kJointColor);
+  draw.draw_point(pa, 5, kJointColor);
+  draw.draw_point(pb, 5, kJointColor);
+}
+
 // A slider's axis through A's anchor `pa` (prismatic and wheel joints): the travel between
 // the limits with a tick at each, or a metre either side when it is unbounded.
 inline void draw_axis(DebugDraw& draw, const Vec2& pa, const Vec2& axis, const JointLimit& limit) {

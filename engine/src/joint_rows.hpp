@@ -11,6 +11,18 @@
 
 namespace mink::detail {
 
+// A spring, motor or limit switched off since the last step must not be warm started: the
+// kinds that have them call this in prepare. (A distance joint's spring shares its impulse
+// with the rigid row, which goes on acting.)
+template <typename Kind>
+void drop_switched_off(Kind& joint) {
+  if constexpr (requires { joint.spring_impulse; }) {
+    if (!joint.def.spring.enabled) joint.spring_impulse = 0;
+  }
+  if (!joint.def.motor.enabled) joint.motor_impulse = 0;
+  if (!joint.def.limit.enabled) joint.lower_impulse = joint.upper_impulse = 0;
+}
+
 // Sets the frame's anchors (from each centre of mass, world-rotated) from body-local anchors.
 void set_anchors(JointFrame& frame, const Vec2& local_anchor_a, const Vec2& local_anchor_b);
 

@@ -105,7 +105,7 @@ void WorldState::finish_joints() {
     }
     const detail::JointBodyState sa = joint_body_state(joint.body[0]);
     const detail::JointBodyState sb = joint_body_state(joint.body[1]);
-    std::visit([&](auto& k) { detail::finish(k, sa, sb); }, joint.kind);
+    std::visit([&](auto& k) { detail::finish_kind(k, sa, sb); }, joint.kind);
   }
   std::sort(joint_break_events.begin(), joint_break_events.end(),
             [](const JointBreakEvent& x, const JointBreakEvent& y) {

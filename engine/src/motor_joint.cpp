@@ -79,16 +79,6 @@ JointReaction reaction(const MotorJoint& joint, const JointFrame& frame) {
   return {frame.inv_h * joint.linear_impulse, frame.inv_h * joint.angular_impulse};
 }
 
-void finish(MotorJoint&, const JointBodyState&, const JointBodyState&) {}
-
-// A motor joint has no free coordinate.
-Real coordinate(const MotorJoint&, const JointBodyState&, const JointBodyState&) {
-  return 0;
-}
-Real speed(const MotorJoint&, const JointBodyState&, const JointBodyState&) {
-  return 0;
-}
-
 void draw(const MotorJoint& joint, const JointBodyState& a, const JointBodyState& b,
           DebugDraw& draw) {
   // The target (a point and B's target direction) and B's origin on its way there.

@@ -53,10 +53,7 @@ void prepare(PrismaticJoint& joint, JointFrame& frame) {
   joint.axis = a.rotation.apply(def.local_axis_a);
   joint.angle_error = wrap_angle(relative_angle(a.rotation, b.rotation) - def.reference_angle);
   joint.spring_soft = make_softness(def.spring.hertz, def.spring.damping_ratio, frame.h);
-  // A part switched off since the last step must not be warm started.
-  if (!def.spring.enabled) joint.spring_impulse = 0;
-  if (!def.motor.enabled) joint.motor_impulse = 0;
-  if (!def.limit.enabled) joint.lower_impulse = joint.upper_impulse = 0;
+  drop_switched_off(joint);
 }
 
 void warm_start(const PrismaticJoint& joint, const JointFrame& frame, SolverBody* bodies) {
@@ -94,8 +91,6 @@ JointReaction reaction(const PrismaticJoint& joint, const JointFrame& frame) {
   return {frame.inv_h * p, frame.inv_h * joint.block_impulse.y()};
 }
 
-void finish(PrismaticJoint&, const JointBodyState&, const JointBodyState&) {}
-
 Real coordinate(const PrismaticJoint& joint, const JointBodyState& a, const JointBodyState& b) {
   const PrismaticJointDef& def = joint.def;
   return slider_translation(a, b, def.local_anchor_a, def.local_anchor_b, def.local_axis_a);
@@ -112,10 +107,7 @@ void draw(const PrismaticJoint& joint, const JointBodyState& a, const JointBodyS
   const Vec2 pa = a.pose.apply(def.local_anchor_a);
   const Vec2 pb = b.pose.apply(def.local_anchor_b);
   draw_axis(draw, pa, a.pose.rotation.apply(def.local_axis_a), def.limit);
-  draw.draw_segment(a.center, pa, kJointColor);
-  draw.draw_segment(b.center, pb, kJointColor);
-  draw.draw_point(pa, 5, kJointColor);
-  draw.draw_point(pb, 5, kJointColor);
+  draw_anchors(draw, a, b, pa, pb);
 }
 
 }  // namespace mink::detail

@@ -113,7 +113,6 @@ JointReaction reaction(const PulleyJoint& joint, const JointFrame& frame) {
 }
 
 // Nothing to settle: the constant comes from the definition.
-void finish(PulleyJoint&, const JointBodyState&, const JointBodyState&) {}
 
 Real coordinate(const PulleyJoint& joint, const JointBodyState& a, const JointBodyState& b) {
   const Real la = (a.pose.apply(joint.def.local_anchor_a) - joint.def.ground_anchor_a).norm();

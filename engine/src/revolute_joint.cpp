@@ -18,10 +18,7 @@ void prepare(RevoluteJoint& joint, JointFrame& frame) {
   joint.spring_soft =
       make_softness(joint.def.spring.hertz, joint.def.spring.damping_ratio, frame.h);
   frame.coordinate_a = joint.angle;
-  // A part switched off since the last step must not be warm started.
-  if (!joint.def.spring.enabled) joint.spring_impulse = 0;
-  if (!joint.def.motor.enabled) joint.motor_impulse = 0;
-  if (!joint.def.limit.enabled) joint.lower_impulse = joint.upper_impulse = 0;
+  drop_switched_off(joint);
 }
 
 void warm_start(const RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies) {
@@ -77,10 +74,7 @@ void draw(const RevoluteJoint& joint, const JointBodyState& a, const JointBodySt
           DebugDraw& draw) {
   const Vec2 pa = a.pose.apply(joint.def.local_anchor_a);
   const Vec2 pb = b.pose.apply(joint.def.local_anchor_b);
-  draw.draw_segment(a.center, pa, kJointColor);
-  draw.draw_segment(b.center, pb, kJointColor);
-  draw.draw_point(pa, 5, kJointColor);
-  draw.draw_point(pb, 5, kJointColor);
+  draw_anchors(draw, a, b, pa, pb);
   if (joint.def.limit.enabled) {
     // The limits as two rays from the anchor, in A's frame at the reference angle.
     const Real base = a.pose.rotation.angle() + joint.def.reference_angle;

@@ -18,7 +18,8 @@ struct RevoluteJoint {
   Softness spring_soft;
 };
 
-// The functions every joint kind implements (see joint.cpp for when each runs).
+// The functions every joint kind implements (see joint_solver.cpp for when each runs);
+// finish, coordinate and speed only where the kind has something to say (joint.hpp).
 void prepare(RevoluteJoint& joint, JointFrame& frame);
 void warm_start(const RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies);
 void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias);

@@ -54,26 +54,13 @@ JointReaction reaction(const WeldJoint& joint, const JointFrame& frame) {
   return {frame.inv_h * joint.linear_impulse, frame.inv_h * joint.angular_impulse};
 }
 
-void finish(WeldJoint&, const JointBodyState&, const JointBodyState&) {}
-
-// A weld has no free coordinate.
-Real coordinate(const WeldJoint&, const JointBodyState&, const JointBodyState&) {
-  return 0;
-}
-Real speed(const WeldJoint&, const JointBodyState&, const JointBodyState&) {
-  return 0;
-}
-
 void draw(const WeldJoint& joint, const JointBodyState& a, const JointBodyState& b,
           DebugDraw& draw) {
   const Vec2 pa = a.pose.apply(joint.def.local_anchor_a);
   const Vec2 pb = b.pose.apply(joint.def.local_anchor_b);
-  draw.draw_segment(a.center, pa, kJointColor);
-  draw.draw_segment(b.center, pb, kJointColor);
+  draw_anchors(draw, a, b, pa, pb);
   // A soft weld's anchors drift apart: the gap shows the spring's stretch.
   draw.draw_segment(pa, pb, kJointAxisColor);
-  draw.draw_point(pa, 5, kJointColor);
-  draw.draw_point(pb, 5, kJointColor);
 }
 
 }  // namespace mink::detail

@@ -24,10 +24,7 @@ void prepare(WheelJoint& joint, JointFrame& frame) {
   const Real k = frame.bodies[0].inv_inertia + frame.bodies[1].inv_inertia;
   joint.motor_mass = k > 0 ? 1 / k : 0;
   joint.spring_soft = make_softness(def.spring.hertz, def.spring.damping_ratio, frame.h);
-  // A part switched off since the last step must not be warm started.
-  if (!def.spring.enabled) joint.spring_impulse = 0;
-  if (!def.motor.enabled) joint.motor_impulse = 0;
-  if (!def.limit.enabled) joint.lower_impulse = joint.upper_impulse = 0;
+  drop_switched_off(joint);
 }
 
 void warm_start(const WheelJoint& joint, const JointFrame& frame, SolverBody* bodies) {
@@ -64,8 +61,6 @@ JointReaction reaction(const WheelJoint& joint, const JointFrame& frame) {
   const Vec2 p = axial_impulse(joint) * joint.axis + joint.perp_impulse * left_perp(joint.axis);
   return {frame.inv_h * p, frame.inv_h * joint.motor_impulse};
 }
-
-void finish(WheelJoint&, const JointBodyState&, const JointBodyState&) {}
 
 Real coordinate(const WheelJoint& joint, const JointBodyState& a, const JointBodyState& b) {
   const WheelJointDef& def = joint.def;

@@ -23,7 +23,6 @@ void prepare(WheelJoint& joint, JointFrame& frame);
 void warm_start(const WheelJoint& joint, const JointFrame& frame, SolverBody* bodies);
 void solve(WheelJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias);
 JointReaction reaction(const WheelJoint& joint, const JointFrame& frame);
-void finish(WheelJoint& joint, const JointBodyState& a, const JointBodyState& b);
 Real coordinate(const WheelJoint& joint, const JointBodyState& a, const JointBodyState& b);
 Real speed(const WheelJoint& joint, const JointBodyState& a, const JointBodyState& b);
 void draw(const WheelJoint& joint, const JointBodyState& a, const JointBodyState& b,
