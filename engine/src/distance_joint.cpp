@@ -32,6 +32,7 @@ void prepare(DistanceJoint& joint, JointFrame& frame) {
   set_anchors(frame, joint.def.local_anchor_a, joint.def.local_anchor_b);
   joint.spring_soft =
       make_softness(joint.def.spring.hertz, joint.def.spring.damping_ratio, frame.h);
+  drop_switched_off(joint);
 }
 
 void warm_start(const DistanceJoint& joint, const JointFrame& frame, SolverBody* bodies) {

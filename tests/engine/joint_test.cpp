@@ -406,3 +406,30 @@ TEST(JointErrors, BadDefinitionsAreRefusedNamingTheField) {
 
 }  // namespace
 }  // namespace mink
+
+namespace mink {
+namespace {
+
+// A distance joint with play winds a ball up against gravity with its motor; switched off,
+// the ball falls freely.
+TEST(DistanceMotor, SwitchedOffItStopsDriving) {
+  World world(free_world());
+  const BodyId ground = world.create_body({});
+  const BodyId ball = add_ball(world, Vec2(0, -5), 0.1);
+  DistanceJointDef joint = distance_joint_at(world, ground, ball, Vec2(0, 0), Vec2(0, -5));
+  joint.limit = {true, 0.5, 100};
+  joint.motor = {true, -1, 1000};
+  const JointId id = world.create_joint(joint);
+  for (int i = 0; i < 30; ++i) world.step();
+  EXPECT_NEAR(world.joint_speed(id), -1, 1e-6);
+  EXPECT_NEAR(world.joint_force(id).y(), kGravity * world.mass(ball), 1e-6);
+  world.set_joint_motor(id, {false, -1, 1000});
+  const Real before = world.linear_velocity(ball).y();
+  for (int i = 0; i < 30; ++i) world.step();
+  // Half a second of free fall.
+  EXPECT_NEAR(world.linear_velocity(ball).y() - before, -0.5 * kGravity, 1e-9);
+  EXPECT_NEAR(world.joint_force(id).norm(), 0, 1e-9);
+}
+
+}  // namespace
+}  // namespace mink
