@@ -162,7 +162,7 @@ JointId World::create_joint(const JointDef& def) {
   WorldState& w = *state_;
   const DefCheck check(std::string(to_string(mink::joint_type(def))) + " joint");
   std::visit([&](const auto& d) { check_def(check, d); }, def);
-  const JointBase& b = std::visit([](const auto& d) -> const JointBase& { return d; }, def);
+  const JointBase& b = joint_base(def);
   check.base(b);
 
   Joint joint;

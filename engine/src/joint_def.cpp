@@ -32,6 +32,14 @@ JointType joint_type(const JointDef& def) noexcept {
   return static_cast<JointType>(def.index());
 }
 
+JointBase& joint_base(JointDef& def) noexcept {
+  return std::visit([](auto& d) -> JointBase& { return d; }, def);
+}
+
+const JointBase& joint_base(const JointDef& def) noexcept {
+  return std::visit([](const auto& d) -> const JointBase& { return d; }, def);
+}
+
 namespace {
 
 // A definition joining a and b with its anchors at world points, taken in each body's frame.

@@ -53,7 +53,7 @@ JointDef joint_in_world(const SceneJoint& joint, std::size_t index, std::span<co
     }
     return bodies[b];
   };
-  JointBase& base = std::visit([](auto& d) -> JointBase& { return d; }, def);
+  JointBase& base = joint_base(def);
   base.body_a = body(joint.body_a, "body_a");
   base.body_b = body(joint.body_b, "body_b");
   return def;
@@ -183,7 +183,7 @@ void capture_joints(const World& world, SceneDef& scene) {
       joint.body_a = body_index.at(world.joint_body_a(id).index);
       joint.body_b = body_index.at(world.joint_body_b(id).index);
     }
-    JointBase& base = std::visit([](auto& d) -> JointBase& { return d; }, joint.def);
+    JointBase& base = joint_base(joint.def);
     base.body_a = BodyId{};
     base.body_b = BodyId{};
     scene.joints.push_back(std::move(joint));

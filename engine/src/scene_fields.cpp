@@ -378,10 +378,10 @@ void set_joint_type(SceneJointRecord& r, const FieldValue& value) {
 }
 
 bool finite_force(const SceneJointRecord& r) {
-  return std::isfinite(std::visit([](const auto& d) { return d.break_force; }, r.joint.def));
+  return std::isfinite(joint_base(r.joint.def).break_force);
 }
 bool finite_torque(const SceneJointRecord& r) {
-  return std::isfinite(std::visit([](const auto& d) { return d.break_torque; }, r.joint.def));
+  return std::isfinite(joint_base(r.joint.def).break_torque);
 }
 
 constexpr auto kLimitOn = [](auto& d) { d.limit.enabled = true; };
@@ -498,7 +498,8 @@ const std::vector<JointRow>& spring_rows() {
       part_field<Driven, [](auto& d) { return &d.spring.enabled; }>(
           "enabled", FieldKind::boolean, "false keeps the spring's settings but turns it off"),
       part_field<Driven, [](auto& d) { return &d.spring.hertz; }>(
-          "hertz", FieldKind::real, "natural frequency (0: damping only)", kNonNegative),
+          "hertz", FieldKind::real, "natural frequency (0: holds the coordinate's speed)",
+          kNonNegative),
       part_field<Driven, [](auto& d) { return &d.spring.damping_ratio; }>(
           "damping_ratio", FieldKind::real, "1: critical", kNonNegative),
       def_field<Targeted, [](auto& d) { return &d.spring.target; }>(

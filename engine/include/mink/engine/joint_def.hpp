@@ -122,10 +122,10 @@ struct WheelJointDef : JointBase {
 /// Drives B towards `linear_offset` (its origin in A's frame) and `angular_offset` (its angle
 /// relative to A) with at most `max_force` and `max_torque`; the sandbox drags bodies with it.
 struct MotorJointDef : JointBase {
-  Vec2 linear_offset{0, 0};      ///< B's origin in A's frame, the target
-  Real angular_offset = 0;       ///< B's angle minus A's, the target
-  Real max_force = 1;            ///< N, >= 0
-  Real max_torque = 1;           ///< N m, >= 0
+  Vec2 linear_offset{0, 0};  ///< B's origin in A's frame, the target
+  Real angular_offset = 0;   ///< B's angle minus A's, the target
+  Real max_force = 1;        ///< N, >= 0
+  Real max_torque = 1;       ///< N m, >= 0
   /// Fraction of the position error turned into target speed per substep, [0, 1].
   Real correction_factor = 0.3;
 };
@@ -157,6 +157,9 @@ using JointDef = std::variant<RevoluteJointDef, PrismaticJointDef, DistanceJoint
 
 /// @brief The kind a definition makes.
 JointType joint_type(const JointDef& def) noexcept;
+/// @brief What every kind's definition shares (bodies, collide_connected, break thresholds).
+JointBase& joint_base(JointDef& def) noexcept;
+const JointBase& joint_base(const JointDef& def) noexcept;
 
 /// @name Definitions from world points
 /// Joints are defined in body-local terms; these fill them in from the bodies' current poses
