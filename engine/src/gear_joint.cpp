@@ -115,7 +115,6 @@ void attach(GearJoint& gear, std::size_t slot, const JointDef& geared, Real coor
     g.local_axis_a = p->local_axis_a;
   }
   g.created = coordinate;
-  gear.value = constant_of(gear);
 }
 
 void prepare(GearJoint& joint, JointFrame& frame) {
@@ -152,12 +151,6 @@ void solve(GearJoint& joint, const JointFrame& frame, SolverBody* bodies, bool u
   const Real p = -mass_scale * row.mass * (cdot + bias) - impulse_scale * joint.impulse;
   joint.impulse += p;
   apply_row(row, bodies, p);
-  if (!use_bias) {
-    // The relax pass follows the substep's position update, so the last one sees the bodies
-    // where the step leaves them.
-    joint.value = row.value;
-    joint.rate = row_velocity(row, bodies);
-  }
 }
 
 JointReaction reaction(const GearJoint& joint, const JointFrame& frame) {
@@ -166,20 +159,6 @@ JointReaction reaction(const GearJoint& joint, const JointFrame& frame) {
   const Real p = joint.def.ratio * joint.impulse * frame.inv_h;
   if (!geared.prismatic) return {Vec2(0, 0), p};
   return {p * geared.axis, p * cross(geared.anchor_b, geared.axis)};
-}
-
-// Nothing to settle: the relax pass recorded the value and rate.
-
-// The gear's two bodies (the joints' B bodies) are not enough to measure either joint's
-// coordinate, so this is the value the last solved step left (or the value at creation): it
-// does not see bodies moved by hand since.
-Real coordinate(const GearJoint& joint, const JointBodyState&, const JointBodyState&) {
-  return joint.value;
-}
-
-// Likewise, the rate after the gear's last relax (about 0 while the gear holds).
-Real speed(const GearJoint& joint, const JointBodyState&, const JointBodyState&) {
-  return joint.rate;
 }
 
 void draw(const GearJoint&, const JointBodyState& a, const JointBodyState& b, DebugDraw& draw) {

@@ -22,14 +22,12 @@ struct GearedJoint {
 
 // A gear: coordinate1 + ratio * coordinate2 held at its value when the gear was made, one
 // rigid row on the four bodies of its two joints (frame bodies: joint1.B, joint2.B, joint1.A,
-// joint2.A).
+// joint2.A). Its coordinate and speed are its joints' (WorldState::joint_coordinate), as its
+// own two bodies cannot give them.
 struct GearJoint {
   GearJointDef def;
   std::array<GearedJoint, 2> joints{};
   Real impulse = 0;  // accumulated, kept between steps for warm starting
-  // coordinate1 + ratio * coordinate2 and its rate, as the last relax pass left them (the
-  // gear's own two bodies cannot give them: see coordinate()).
-  Real value = 0, rate = 0;
 };
 
 // Called by create_joint before the gear is first solved: the gear's joint `slot` (0 for
@@ -41,8 +39,6 @@ void prepare(GearJoint& joint, JointFrame& frame);
 void warm_start(const GearJoint& joint, const JointFrame& frame, SolverBody* bodies);
 void solve(GearJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias);
 JointReaction reaction(const GearJoint& joint, const JointFrame& frame);
-Real coordinate(const GearJoint& joint, const JointBodyState& a, const JointBodyState& b);
-Real speed(const GearJoint& joint, const JointBodyState& a, const JointBodyState& b);
 void draw(const GearJoint& joint, const JointBodyState& a, const JointBodyState& b,
           DebugDraw& draw);
 

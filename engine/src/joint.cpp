@@ -284,6 +284,10 @@ detail::JointBodyState WorldState::joint_body_state(std::uint32_t index) const {
 
 Real WorldState::joint_coordinate(std::uint32_t index) const {
   const Joint& j = joints[index];
+  if (const auto* gear = std::get_if<detail::GearJoint>(&j.kind)) {
+    return joint_coordinate(j.gear_joints[0]) +
+           gear->def.ratio * joint_coordinate(j.gear_joints[1]);
+  }
   const detail::JointBodyState a = joint_body_state(j.body[0]);
   const detail::JointBodyState b = joint_body_state(j.body[1]);
   return std::visit([&](const auto& k) { return detail::coordinate_of(k, a, b); }, j.kind);
@@ -291,6 +295,9 @@ Real WorldState::joint_coordinate(std::uint32_t index) const {
 
 Real WorldState::joint_speed(std::uint32_t index) const {
   const Joint& j = joints[index];
+  if (const auto* gear = std::get_if<detail::GearJoint>(&j.kind)) {
+    return joint_speed(j.gear_joints[0]) + gear->def.ratio * joint_speed(j.gear_joints[1]);
+  }
   const detail::JointBodyState a = joint_body_state(j.body[0]);
   const detail::JointBodyState b = joint_body_state(j.body[1]);
   return std::visit([&](const auto& k) { return detail::speed_of(k, a, b); }, j.kind);

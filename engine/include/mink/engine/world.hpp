@@ -278,7 +278,7 @@ class World {
   Real joint_torque(JointId id) const;
   /// The joint's free coordinate now: revolute angle (radians, counted through full turns),
   /// prismatic and wheel translation, distance and pulley length (pulley: length_a +
-  /// ratio * length_b), 0 for the others.
+  /// ratio * length_b), a gear's coordinate1 + ratio * coordinate2, 0 for the others.
   Real joint_coordinate(JointId id) const;
   /// @brief The coordinate's rate of change now (rad/s or m/s), 0 where it has none.
   Real joint_speed(JointId id) const;
