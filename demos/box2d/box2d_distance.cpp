@@ -9,8 +9,7 @@ namespace mink::interop {
 std::vector<b2Vec2> to_float(std::span<const Vec2> points) {
   std::vector<b2Vec2> out;
   out.reserve(points.size());
-  for (const Vec2& p : points)
-    out.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
+  for (const Vec2& p : points) out.push_back(to_float(p));
   return out;
 }
 

@@ -17,6 +17,10 @@ struct Box2dDistance {
   int iterations = 0;
 };
 
+// A point rounded to float, as Box2D's.
+inline b2Vec2 to_float(const Vec2& p) {
+  return {static_cast<float>(p.x()), static_cast<float>(p.y())};
+}
 // The points rounded to float, as Box2D's vertices.
 std::vector<b2Vec2> to_float(std::span<const Vec2> points);
 

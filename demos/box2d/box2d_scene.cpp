@@ -80,17 +80,14 @@ Box2dScene build_box2d_world(const SceneDef& scene) {
       result.top = b;
     }
   }
-  const auto point = [](const Vec2& v) {
-    return b2Vec2(static_cast<float>(v.x()), static_cast<float>(v.y()));
-  };
   for (const SceneJoint& joint : scene.joints) {
     const auto& revolute = std::get<RevoluteJointDef>(joint.def);
     b2RevoluteJointDef def;
     def.bodyA = result.bodies.at(joint.body_a);
     def.bodyB = result.bodies.at(joint.body_b);
     def.collideConnected = revolute.collide_connected;
-    def.localAnchorA = point(revolute.local_anchor_a);
-    def.localAnchorB = point(revolute.local_anchor_b);
+    def.localAnchorA = to_float(revolute.local_anchor_a);
+    def.localAnchorB = to_float(revolute.local_anchor_b);
     def.referenceAngle = static_cast<float>(revolute.reference_angle);
     def.enableLimit = revolute.limit.enabled;
     def.lowerAngle = static_cast<float>(revolute.limit.lower);

@@ -14,13 +14,9 @@ namespace mink::interop {
 
 namespace {
 
-b2Vec2 to_b2(const Vec2& p) {
-  return {static_cast<float>(p.x()), static_cast<float>(p.y())};
-}
-
 b2CircleShape circle(const Vec2& center, double radius) {
   b2CircleShape c;
-  c.m_p = to_b2(center);
+  c.m_p = to_float(center);
   c.m_radius = static_cast<float>(radius);
   return c;
 }
@@ -35,7 +31,7 @@ b2PolygonShape polygon_shape(std::span<const Vec2> polygon, double skin = b2_pol
 
 b2EdgeShape edge(const Vec2& p1, const Vec2& p2, double skin) {
   b2EdgeShape e;
-  e.SetTwoSided(to_b2(p1), to_b2(p2));
+  e.SetTwoSided(to_float(p1), to_float(p2));
   e.m_radius = static_cast<float>(skin);
   return e;
 }
