@@ -84,10 +84,8 @@ Real speed(const DistanceJoint& joint, const JointBodyState& a, const JointBodyS
   const Vec2 d = anchor_offset(joint, a, b);
   const Real length = d.norm();
   if (length == 0) return 0;
-  const Vec2 ra = a.pose.apply(joint.def.local_anchor_a) - a.center;
-  const Vec2 rb = b.pose.apply(joint.def.local_anchor_b) - b.center;
-  const Vec2 va = a.velocity + cross(a.angular_velocity, ra);
-  const Vec2 vb = b.velocity + cross(b.angular_velocity, rb);
+  const Vec2 va = a.velocity_at(a.pose.apply(joint.def.local_anchor_a));
+  const Vec2 vb = b.velocity_at(b.pose.apply(joint.def.local_anchor_b));
   return d.dot(vb - va) / length;
 }
 

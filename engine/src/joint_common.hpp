@@ -49,6 +49,11 @@ struct JointBodyState {
   Vec2 center{0, 0};
   Vec2 velocity{0, 0};
   Real angular_velocity = 0;
+  // The velocity of the body's material point now at world point `p`.
+  Vec2 velocity_at(const Vec2& p) const {
+    return velocity +
+           Vec2(-angular_velocity * (p.y() - center.y()), angular_velocity * (p.x() - center.x()));
+  }
 };
 
 // Force and torque a joint put on body B during the last step.
@@ -126,9 +131,8 @@ inline Real slider_speed(const JointBodyState& a, const JointBodyState& b,
                          const Vec2& local_axis_a) {
   const Vec2 pa = a.pose.apply(local_anchor_a), pb = b.pose.apply(local_anchor_b);
   const Vec2 axis = a.pose.rotation.apply(local_axis_a);
-  const Vec2 va = a.velocity + cross(a.angular_velocity, Vec2(pa - a.center));
-  const Vec2 vb = b.velocity + cross(b.angular_velocity, Vec2(pb - b.center));
-  return (pb - pa).dot(cross(a.angular_velocity, axis)) + axis.dot(vb - va);
+  return (pb - pa).dot(cross(a.angular_velocity, axis)) +
+         axis.dot(b.velocity_at(pb) - a.velocity_at(pa));
 }
 
 // Each body's anchor, tied to its centre of mass (the drawing every anchored kind starts from).

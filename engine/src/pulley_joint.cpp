@@ -125,9 +125,7 @@ Real speed(const PulleyJoint& joint, const JointBodyState& a, const JointBodySta
   const Vec2 pb = b.pose.apply(joint.def.local_anchor_b);
   const Rope ra = rope(joint.def.ground_anchor_a, pa);
   const Rope rb = rope(joint.def.ground_anchor_b, pb);
-  const Vec2 va = a.velocity + cross(a.angular_velocity, pa - a.center);
-  const Vec2 vb = b.velocity + cross(b.angular_velocity, pb - b.center);
-  return ra.axis.dot(va) + joint.def.ratio * rb.axis.dot(vb);
+  return ra.axis.dot(a.velocity_at(pa)) + joint.def.ratio * rb.axis.dot(b.velocity_at(pb));
 }
 
 void draw(const PulleyJoint& joint, const JointBodyState& a, const JointBodyState& b,
