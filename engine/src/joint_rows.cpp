@@ -42,6 +42,15 @@ void set_anchors(JointFrame& frame, const Vec2& local_anchor_a, const Vec2& loca
   frame.delta_center = b.center - a.center;
 }
 
+void warm_start_point(SolverBody* bodies, const JointFrame& frame, const Vec2& linear,
+                      Real angular) {
+  SolverBody& a = bodies[frame.bodies[0].solver];
+  SolverBody& b = bodies[frame.bodies[1].solver];
+  const Vec2 ra = delta_rotation(a).apply(frame.anchor_a);
+  const Vec2 rb = delta_rotation(b).apply(frame.anchor_b);
+  apply_pair(a, b, frame, ra, rb, linear, angular);
+}
+
 CurrentAnchors current_anchors(const JointFrame& frame, const SolverBody& a, const SolverBody& b) {
   CurrentAnchors c;
   c.ra = delta_rotation(a).apply(frame.anchor_a);

@@ -32,6 +32,11 @@ struct CurrentAnchors {
 };
 CurrentAnchors current_anchors(const JointFrame& frame, const SolverBody& a, const SolverBody& b);
 
+// Warm starts a point-and-angle joint (revolute, weld, motor joint): `linear` at the anchors
+// as they are now, `angular` on the relative angle.
+void warm_start_point(SolverBody* bodies, const JointFrame& frame, const Vec2& linear,
+                      Real angular);
+
 // B's anchor held on A's: a 2x2 block row. `impulse` accumulates.
 void solve_point(SolverBody& a, SolverBody& b, const JointFrame& frame, bool use_bias,
                  Vec2& impulse);

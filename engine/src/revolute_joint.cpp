@@ -21,14 +21,17 @@ void prepare(RevoluteJoint& joint, JointFrame& frame) {
   drop_switched_off(joint);
 }
 
+namespace {
+
+// What the angle's rows (spring, motor, limits) hold together.
+Real angular_impulse(const RevoluteJoint& joint) {
+  return joint.spring_impulse + joint.motor_impulse + joint.lower_impulse - joint.upper_impulse;
+}
+
+}  // namespace
+
 void warm_start(const RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies) {
-  SolverBody& a = bodies[frame.bodies[0].solver];
-  SolverBody& b = bodies[frame.bodies[1].solver];
-  const Vec2 ra = delta_rotation(a).apply(frame.anchor_a);
-  const Vec2 rb = delta_rotation(b).apply(frame.anchor_b);
-  const Real axial =
-      joint.spring_impulse + joint.motor_impulse + joint.lower_impulse - joint.upper_impulse;
-  apply_pair(a, b, frame, ra, rb, joint.linear_impulse, axial);
+  warm_start_point(bodies, frame, joint.linear_impulse, angular_impulse(joint));
 }
 
 void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias) {
@@ -52,9 +55,7 @@ void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bo
 }
 
 JointReaction reaction(const RevoluteJoint& joint, const JointFrame& frame) {
-  const Real axial =
-      joint.spring_impulse + joint.motor_impulse + joint.lower_impulse - joint.upper_impulse;
-  return {frame.inv_h * joint.linear_impulse, frame.inv_h * axial};
+  return {frame.inv_h * joint.linear_impulse, frame.inv_h * angular_impulse(joint)};
 }
 
 Real coordinate(const RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b) {

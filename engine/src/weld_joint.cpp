@@ -22,11 +22,7 @@ void prepare(WeldJoint& joint, JointFrame& frame) {
 }
 
 void warm_start(const WeldJoint& joint, const JointFrame& frame, SolverBody* bodies) {
-  SolverBody& a = bodies[frame.bodies[0].solver];
-  SolverBody& b = bodies[frame.bodies[1].solver];
-  const Vec2 ra = delta_rotation(a).apply(frame.anchor_a);
-  const Vec2 rb = delta_rotation(b).apply(frame.anchor_b);
-  apply_pair(a, b, frame, ra, rb, joint.linear_impulse, joint.angular_impulse);
+  warm_start_point(bodies, frame, joint.linear_impulse, joint.angular_impulse);
 }
 
 void solve(WeldJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias) {
