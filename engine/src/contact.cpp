@@ -205,14 +205,107 @@ void measure_approach(Contact& c, const Body& a, const Body& b) {
 
 }  // namespace
 
+// One contact's narrowphase (collide() below): its manifold, warm-start impulses and
+// manifold cache, written to the contact alone so contacts can be collided in parallel.
+// Returns whether the shapes now touch.
+bool WorldState::update_manifold(Contact& c) const {
+  const Real touching_distance = 4 * def.linear_slop;
+  const bool reuse = def.reuse_manifolds;
+  const Real reuse_tolerance = 0.1 * def.linear_slop;
+  const Body& body_a = bodies[c.body_a];
+  const Body& body_b = bodies[c.body_b];
+  const Shape& shape_a = shapes[c.shape_a];
+  const Shape& shape_b = shapes[c.shape_b];
+  const Pose pose_a = body_a.pose(), pose_b = body_b.pose();
+  const Rotation& ra = pose_a.rotation;
+  const Pose relative = relative_pose(pose_a, pose_b);
+  detail::ManifoldCache& cache = c.cache;
+  bool same_features = false;
+  if (reuse && cache.valid) {
+    const Rotation& then = cache.relative.rotation;
+    const Rotation& now = relative.rotation;
+    const Real turn = std::abs(then.cos * now.sin - then.sin * now.cos);  // sin of the change
+    const Vec2 moved = relative.position - cache.relative.position;
+    const Real shift = std::abs(moved.x()) + std::abs(moved.y());
+    same_features = shift + turn * (body_a.extent + body_b.extent) < reuse_tolerance;
+  }
+
+  if (same_features) {
+    // Move the stored surface points with their bodies and measure again; the impulses
+    // stay.
+    const Vec2 normal = ra.apply(cache.normal);
+    c.manifold.normal = normal;
+    for (int j = 0; j < c.manifold.point_count; ++j) {
+      const Vec2 on_a = pose_a.apply(cache.on_a[j]);
+      const Vec2 on_b = pose_b.apply(cache.on_b[j]);
+      ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+      p.separation = normal.dot(on_b - on_a);
+      p.point = 0.5 * (on_a + on_b);
+    }
+  } else {
+    const Manifold old = c.manifold;
+    const Real old_normal[2] = {c.normal_impulse[0], c.normal_impulse[1]};
+    const Real old_tangent[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
+    if (!shape_a.aabb.overlaps(shape_b.aabb)) {
+      c.manifold.point_count = 0;
+    } else {
+      // Speculative distance: the base margin plus how far the pair may close this step.
+      const Vec2 dv = body_b.velocity - body_a.velocity;
+      const Real closing = dv.norm() + std::abs(body_a.angular_velocity) * body_a.extent +
+                           std::abs(body_b.angular_velocity) * body_b.extent;
+      const Real speculative = touching_distance + dt * closing;
+      if (c.sharp_polygons) {
+        c.manifold =
+            collide_hulls(std::get<RoundedPolygon>(shape_a.geometry).hull, pose_a,
+                          std::get<RoundedPolygon>(shape_b.geometry).hull, pose_b, speculative);
+        if (!shape_a.internal_edges.empty() || !shape_b.internal_edges.empty()) {
+          smooth_seam(c, speculative);
+        }
+      } else {
+        c.manifold =
+            collide_shapes(shape_a.geometry, pose_a, shape_b.geometry, pose_b, speculative);
+      }
+    }
+    cache.valid = c.manifold.point_count > 0;
+    if (cache.valid) {
+      cache.relative = relative;
+      const Vec2 normal = c.manifold.normal;
+      cache.normal = ra.apply_inverse(normal);
+      for (int j = 0; j < c.manifold.point_count; ++j) {
+        const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+        cache.on_a[j] = pose_a.apply_inverse(p.point - 0.5 * p.separation * normal);
+        cache.on_b[j] = pose_b.apply_inverse(p.point + 0.5 * p.separation * normal);
+      }
+    }
+    // Warm start: carry the impulses of the point with the same feature id.
+    for (int j = 0; j < c.manifold.point_count; ++j) {
+      const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+      c.normal_impulse[j] = 0;
+      c.tangent_impulse[j] = 0;
+      for (int k = 0; k < old.point_count; ++k) {
+        if (old.points[static_cast<std::size_t>(k)].id == p.id) {
+          c.normal_impulse[j] = old_normal[k];
+          c.tangent_impulse[j] = old_tangent[k];
+          break;
+        }
+      }
+    }
+  }
+  if (c.hit_events) measure_approach(c, body_a, body_b);
+
+  bool touching = false;
+  for (int j = 0; j < c.manifold.point_count; ++j) {
+    const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+    touching = touching || p.separation < touching_distance;
+  }
+  return touching;
+}
+
 // Narrowphase for every contact with a moving body. A pair whose relative pose has moved
 // less than a tenth of the linear slop since its manifold was computed keeps the manifold's
 // features and only has its separations measured again (as persistent-manifold engines do):
 // resting stacks then cost a few multiplies per point instead of a collision.
 void WorldState::collide() {
-  const Real touching_distance = 4 * def.linear_slop;
-  const bool reuse = def.reuse_manifolds;
-  const Real reuse_tolerance = 0.1 * def.linear_slop;
   // The contacts of moving bodies, in contact order (the order events and the solver use).
   compact_awake_list();
   step_contacts.clear();
@@ -225,100 +318,34 @@ void WorldState::collide() {
   }
   std::sort(step_contacts.begin(), step_contacts.end());
   counters.collided_contacts = step_contacts.size();
-  for (const std::uint32_t ci : step_contacts) {
+  // Manifolds in parallel (each writes only its own contact), then what is shared (colours,
+  // the touching count, events) in contact order, for the contacts whose state changed.
+  enum : std::uint8_t { kColorChange = 1, kTouchingChange = 2 };
+  collide_changes.resize(step_contacts.size());
+  tasks.parallel_for(static_cast<std::uint32_t>(step_contacts.size()), 64,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       for (std::uint32_t k = begin; k < end; ++k) {
+                         Contact& c = contacts[step_contacts[k]];
+                         const bool was_touching = c.touching;
+                         const bool touching = update_manifold(c);
+                         const bool acting = c.manifold.point_count > 0;
+                         collide_changes[k] = static_cast<std::uint8_t>(
+                             (acting != (c.color != detail::kNoColor) ? kColorChange : 0) |
+                             (touching != was_touching ? kTouchingChange : 0));
+                       }
+                     });
+  for (std::size_t k = 0; k < step_contacts.size(); ++k) {
+    if (collide_changes[k] == 0) continue;
+    const std::uint32_t ci = step_contacts[k];
+    if (collide_changes[k] & kColorChange) update_color(ci);
+    if (!(collide_changes[k] & kTouchingChange)) continue;
     Contact& c = contacts[ci];
-    const Body& body_a = bodies[c.body_a];
-    const Body& body_b = bodies[c.body_b];
-    const Shape& shape_a = shapes[c.shape_a];
-    const Shape& shape_b = shapes[c.shape_b];
-    const bool was_touching = c.touching;
-    const Pose pose_a = body_a.pose(), pose_b = body_b.pose();
-    const Rotation& ra = pose_a.rotation;
-    const Pose relative = relative_pose(pose_a, pose_b);
-    detail::ManifoldCache& cache = c.cache;
-    bool same_features = false;
-    if (reuse && cache.valid) {
-      const Rotation& then = cache.relative.rotation;
-      const Rotation& now = relative.rotation;
-      const Real turn = std::abs(then.cos * now.sin - then.sin * now.cos);  // sin of the change
-      const Vec2 moved = relative.position - cache.relative.position;
-      const Real shift = std::abs(moved.x()) + std::abs(moved.y());
-      same_features = shift + turn * (body_a.extent + body_b.extent) < reuse_tolerance;
-    }
-
-    if (same_features) {
-      // Move the stored surface points with their bodies and measure again; the impulses stay.
-      const Vec2 normal = ra.apply(cache.normal);
-      c.manifold.normal = normal;
-      for (int j = 0; j < c.manifold.point_count; ++j) {
-        const Vec2 on_a = pose_a.apply(cache.on_a[j]);
-        const Vec2 on_b = pose_b.apply(cache.on_b[j]);
-        ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
-        p.separation = normal.dot(on_b - on_a);
-        p.point = 0.5 * (on_a + on_b);
-      }
-    } else {
-      const Manifold old = c.manifold;
-      const Real old_normal[2] = {c.normal_impulse[0], c.normal_impulse[1]};
-      const Real old_tangent[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
-      if (!shape_a.aabb.overlaps(shape_b.aabb)) {
-        c.manifold.point_count = 0;
-      } else {
-        // Speculative distance: the base margin plus how far the pair may close this step.
-        const Vec2 dv = body_b.velocity - body_a.velocity;
-        const Real closing = dv.norm() + std::abs(body_a.angular_velocity) * body_a.extent +
-                             std::abs(body_b.angular_velocity) * body_b.extent;
-        const Real speculative = touching_distance + dt * closing;
-        if (c.sharp_polygons) {
-          c.manifold =
-              collide_hulls(std::get<RoundedPolygon>(shape_a.geometry).hull, pose_a,
-                            std::get<RoundedPolygon>(shape_b.geometry).hull, pose_b, speculative);
-          if (!shape_a.internal_edges.empty() || !shape_b.internal_edges.empty()) {
-            smooth_seam(c, speculative);
-          }
-        } else {
-          c.manifold =
-              collide_shapes(shape_a.geometry, pose_a, shape_b.geometry, pose_b, speculative);
-        }
-      }
-      cache.valid = c.manifold.point_count > 0;
-      if (cache.valid) {
-        cache.relative = relative;
-        const Vec2 normal = c.manifold.normal;
-        cache.normal = ra.apply_inverse(normal);
-        for (int j = 0; j < c.manifold.point_count; ++j) {
-          const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
-          cache.on_a[j] = pose_a.apply_inverse(p.point - 0.5 * p.separation * normal);
-          cache.on_b[j] = pose_b.apply_inverse(p.point + 0.5 * p.separation * normal);
-        }
-      }
-      // Warm start: carry the impulses of the point with the same feature id.
-      for (int j = 0; j < c.manifold.point_count; ++j) {
-        const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
-        c.normal_impulse[j] = 0;
-        c.tangent_impulse[j] = 0;
-        for (int k = 0; k < old.point_count; ++k) {
-          if (old.points[static_cast<std::size_t>(k)].id == p.id) {
-            c.normal_impulse[j] = old_normal[k];
-            c.tangent_impulse[j] = old_tangent[k];
-            break;
-          }
-        }
-      }
-    }
-    update_color(ci);
-    if (c.hit_events) measure_approach(c, body_a, body_b);
-
-    bool touching = false;
-    for (int j = 0; j < c.manifold.point_count; ++j) {
-      const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
-      touching = touching || p.separation < touching_distance;
-    }
+    const bool touching = !c.touching;
     set_touching(c, touching);
     if (!c.events) continue;
-    if (touching && !was_touching) {
+    if (touching) {
       begin_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b), c.manifold});
-    } else if (!touching && was_touching) {
+    } else {
       end_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b)});
     }
   }

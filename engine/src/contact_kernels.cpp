@@ -30,6 +30,17 @@ inline Real smin(Real a, Real b) {
   return a < b ? a : b;
 }
 
+// As the wide path's scatter: a body the solver cannot move (no inverse mass or inertia) may
+// be in several constraints of a colour solved at once on other threads, so it is never
+// written.
+inline void store_velocity(SolverBody& body, Real inv_mass, Real inv_inertia, Real vx, Real vy,
+                           Real w) {
+  if (inv_mass == 0 && inv_inertia == 0) return;
+  body.vx = vx;
+  body.vy = vy;
+  body.w = w;
+}
+
 }  // namespace
 
 void integrate_velocities(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
@@ -88,8 +99,8 @@ void warm_start_one(SolverBody* bodies, ContactConstraint& c) {
     vbx += c.inv_mass_b * px;
     vby += c.inv_mass_b * py;
   }
-  a.vx = vax, a.vy = vay, a.w = wa;
-  b.vx = vbx, b.vy = vby, b.w = wb;
+  store_velocity(a, c.inv_mass_a, c.inv_inertia_a, vax, vay, wa);
+  store_velocity(b, c.inv_mass_b, c.inv_inertia_b, vbx, vby, wb);
 }
 
 void solve_one(SolverBody* bodies, ContactConstraint& c, Real inv_h, Real max_push, bool use_bias) {
@@ -143,8 +154,8 @@ void solve_one(SolverBody* bodies, ContactConstraint& c, Real inv_h, Real max_pu
     p.tangent_impulse = accumulated;
     apply(p, impulse * tx, impulse * ty);
   }
-  a.vx = vax, a.vy = vay, a.w = wa;
-  b.vx = vbx, b.vy = vby, b.w = wb;
+  store_velocity(a, c.inv_mass_a, c.inv_inertia_a, vax, vay, wa);
+  store_velocity(b, c.inv_mass_b, c.inv_inertia_b, vbx, vby, wb);
 }
 
 void restitution_one(SolverBody* bodies, ContactConstraint& c, Real threshold) {

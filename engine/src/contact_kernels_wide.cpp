@@ -37,10 +37,14 @@ inline WideBody gather(const SolverBody* bodies, const std::int32_t* index) {
           Wide{b0.qs, b1.qs, b2.qs, b3.qs}};
 }
 
-// Only velocities change while solving. Lanes sharing the still body write back the same
-// zeros it holds (its masses are zero), so the order of those writes does not matter.
-inline void scatter(SolverBody* bodies, const std::int32_t* index, const WideBody& w) {
+// Only velocities change while solving, and only those of bodies the solver can move: a
+// kinematic body or the still body (no inverse mass or inertia) may sit in several
+// constraints of a colour, which other threads solve at the same time, so it is never
+// written.
+inline void scatter(SolverBody* bodies, const std::int32_t* index, const WideBody& w,
+                    const Wide& inv_mass, const Wide& inv_inertia) {
   for (int lane = 0; lane < 4; ++lane) {
+    if (inv_mass[lane] == 0 && inv_inertia[lane] == 0) continue;
     SolverBody& b = bodies[index[lane]];
     b.vx = w.vx[lane];
     b.vy = w.vy[lane];
@@ -113,8 +117,8 @@ __attribute__((always_inline)) inline void solve_wide_impl(
       p.tangent_impulse = accumulated;
       apply(p, bx, by, impulse * tx, impulse * ty);
     }
-    scatter(bodies, c->body_a, a);
-    scatter(bodies, c->body_b, b);
+    scatter(bodies, c->body_a, a, c->inv_mass_a, c->inv_inertia_a);
+    scatter(bodies, c->body_b, b, c->inv_mass_b, c->inv_inertia_b);
   }
 }
 
@@ -139,8 +143,8 @@ __attribute__((target_clones("avx2", "default"))) void warm_start_wide(SolverBod
       b.vx += c->inv_mass_b * px;
       b.vy += c->inv_mass_b * py;
     }
-    scatter(bodies, c->body_a, a);
-    scatter(bodies, c->body_b, b);
+    scatter(bodies, c->body_a, a, c->inv_mass_a, c->inv_inertia_a);
+    scatter(bodies, c->body_b, b, c->inv_mass_b, c->inv_inertia_b);
   }
 }
 

@@ -38,6 +38,7 @@
 #include "constraint_graph.hpp"
 #include "contact_kernels.hpp"
 #include "joint_solver.hpp"
+#include "task_runner.hpp"
 
 namespace mink::detail {
 
@@ -65,11 +66,16 @@ constexpr std::uint32_t kScalar = 1u << 31;
 }  // namespace
 
 void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::int32_t still,
-                          bool wide) {
+                          bool wide, std::uint32_t workers) {
   wide_mode_ = wide;
   bouncy_ = false;
   still_ = still;
   restitution_.clear();
+  findings_.resize(workers);
+  for (WorkerFindings& f : findings_) {
+    f.bouncy = false;
+    f.restitution.clear();
+  }
   // Colours come from the constraint graph, which keeps them from step to step.
   color_of_.resize(constraints.size());
   std::array<std::uint32_t, kColorCount + 1> counts{};
@@ -109,18 +115,24 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
   }
 }
 
-void ContactSolver::set(std::uint32_t index, const ContactConstraint& constraint) {
+void ContactSolver::set(std::uint32_t index, const ContactConstraint& constraint,
+                        std::uint32_t worker) {
   const std::uint32_t slot = slot_[index];
-  bouncy_ = bouncy_ || constraint.restitution > 0;
+  WorkerFindings& found = findings_[worker];
+  found.bouncy = found.bouncy || constraint.restitution > 0;
   if (slot & kScalar) {
     scalar_[slot & ~kScalar] = constraint;
   } else {
     pack(wide_[slot / 4], static_cast<int>(slot % 4), constraint);
-    if (constraint.restitution > 0) restitution_.emplace_back(slot, constraint);
+    if (constraint.restitution > 0) found.restitution.emplace_back(slot, constraint);
   }
 }
 
 void ContactSolver::finish() {
+  for (WorkerFindings& f : findings_) {
+    bouncy_ = bouncy_ || f.bouncy;
+    restitution_.insert(restitution_.end(), f.restitution.begin(), f.restitution.end());
+  }
   if (!wide_mode_) return;
   // Lanes past the end of each colour's last batch: the still body, no mass, no impulse.
   ContactConstraint padding;
@@ -155,50 +167,147 @@ void ContactSolver::impulses(std::uint32_t index, Real normal[2], Real tangent[2
   }
 }
 
+namespace {
+
+// What one stage of a substep does; the colour stages carry their colour.
+enum class StageKind : std::uint8_t {
+  integrate_velocities,
+  joint_warm_start,
+  warm_start,
+  joint_solve,
+  solve,
+  integrate_positions,
+  joint_relax,
+  relax,
+};
+
+}  // namespace
+
+// Every substep is the same list of stages; stage s of the run is stage s % per-substep of it.
+struct ContactSolver::Stage {
+  StageKind kind;
+  std::uint32_t color;  // colour stages: kColorCount is the overflow
+  std::uint32_t begin, end, block_size;
+};
+
+namespace {
+
+std::uint32_t block_count(std::uint32_t items, std::uint32_t block_size) {
+  return (items + block_size - 1) / block_size;
+}
+
+}  // namespace
+
 void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
-                          const SolverSettings& settings, JointStages* joints) {
-  SolverBody* body_data = bodies.data();
-  WideConstraint* wide_data = wide_.data();
+                          const SolverSettings& settings, JointStages* joints, TaskRunner& tasks) {
   // Largest impulses are only needed when something bounces.
   max_impulse_.assign(bouncy_ && wide_mode_ ? wide_.size() : 0, WideMaxImpulse{});
+  const std::uint32_t workers = tasks.workers();
+  // Blocks: about four per worker, so uneven blocks even out, but not so small that taking
+  // one costs more than running it. The split never changes a result: a colour's
+  // constraints share no moving body, and bodies integrate alone.
+  const auto split = [&](std::uint32_t items, std::uint32_t smallest) {
+    return std::max(smallest, (items + 4 * workers - 1) / (4 * workers));
+  };
+  const auto body_count = static_cast<std::uint32_t>(bodies.size());
+  stages_.clear();
+  const auto colour_stages = [&](StageKind kind) {
+    for (std::uint32_t c = 0; c < kColorCount; ++c) {
+      const std::uint32_t begin = wide_mode_ ? wide_begin_[c] : color_begin_[c];
+      const std::uint32_t end = wide_mode_ ? wide_begin_[c + 1] : color_begin_[c + 1];
+      if (end > begin)
+        stages_.push_back({kind, c, begin, end, split(end - begin, wide_mode_ ? 8 : 32)});
+    }
+    // The overflow: one at a time, after the colours.
+    const std::uint32_t begin = wide_mode_ ? 0 : color_begin_[kColorCount];
+    const auto end = static_cast<std::uint32_t>(scalar_.size());
+    if (end > begin) stages_.push_back({kind, kColorCount, begin, end, end - begin});
+  };
+  const bool with_joints = joints != nullptr;
+  stages_.push_back({StageKind::integrate_velocities, 0, 0, body_count, split(body_count, 64)});
+  if (with_joints) stages_.push_back({StageKind::joint_warm_start, 0, 0, 1, 1});
+  colour_stages(StageKind::warm_start);
+  for (int i = 0; with_joints && i < settings.joint_iterations; ++i) {
+    stages_.push_back({StageKind::joint_solve, 0, 0, 1, 1});
+  }
+  colour_stages(StageKind::solve);
+  stages_.push_back({StageKind::integrate_positions, 0, 0, body_count, split(body_count, 64)});
+  if (with_joints) stages_.push_back({StageKind::joint_relax, 0, 0, 1, 1});
+  colour_stages(StageKind::relax);
+  const std::size_t per_substep = stages_.size();
+  stage_blocks_.clear();
+  for (int substep = 0; substep < settings.substeps; ++substep) {
+    for (std::size_t i = 0; i < per_substep; ++i) {
+      const Stage& st = stages_[i];
+      stage_blocks_.push_back(block_count(st.end - st.begin, st.block_size));
+    }
+  }
+
+  struct Context {
+    ContactSolver* solver;
+    std::span<SolverBody> bodies;
+    std::span<const SolverBodyParams> params;
+    const SolverSettings* settings;
+    JointStages* joints;
+    std::size_t per_substep;
+  } context{this, bodies, params, &settings, joints, per_substep};
+  const auto run_block = [](void* opaque, std::uint32_t stage, std::uint32_t block) {
+    const Context& x = *static_cast<Context*>(opaque);
+    ContactSolver& self = *x.solver;
+    const Stage& st = self.stages_[stage % x.per_substep];
+    const std::uint32_t begin = st.begin + block * st.block_size;
+    const std::uint32_t end = std::min(st.end, begin + st.block_size);
+    SolverBody* body_data = x.bodies.data();
+    const Real inv_h = x.settings->inv_h, max_push = x.settings->contact_push_max_velocity;
+    const bool overflow = st.color == kColorCount;
+    WideConstraint* wide = self.wide_.data();
+    WideMaxImpulse* max_data = self.max_impulse_.empty() ? nullptr : self.max_impulse_.data();
+    switch (st.kind) {
+      case StageKind::integrate_velocities:
+        integrate_velocities(x.bodies.subspan(begin, end - begin),
+                             x.params.subspan(begin, end - begin), *x.settings);
+        return;
+      case StageKind::integrate_positions:
+        integrate_positions(x.bodies.subspan(begin, end - begin), x.settings->h);
+        return;
+      case StageKind::joint_warm_start:
+        x.joints->warm_start(body_data);
+        return;
+      case StageKind::joint_solve:
+        x.joints->solve(body_data, true);
+        return;
+      case StageKind::joint_relax:
+        x.joints->solve(body_data, false);
+        return;
+      case StageKind::warm_start:
+        if (self.wide_mode_ && !overflow) {
+          warm_start_wide(body_data, wide + begin, wide + end);
+        } else {
+          for (std::uint32_t i = begin; i < end; ++i) warm_start_one(body_data, self.scalar_[i]);
+        }
+        return;
+      case StageKind::solve:
+      case StageKind::relax: {
+        const bool use_bias = st.kind == StageKind::solve;
+        if (self.wide_mode_ && !overflow) {
+          solve_wide(body_data, wide + begin, wide + end, max_data ? max_data + begin : nullptr,
+                     inv_h, max_push, use_bias);
+        } else {
+          for (std::uint32_t i = begin; i < end; ++i) {
+            solve_one(body_data, self.scalar_[i], inv_h, max_push, use_bias);
+          }
+        }
+        return;
+      }
+    }
+  };
+  stage_runner_.run(tasks, stage_blocks_, run_block, &context);
+
+  SolverBody* body_data = bodies.data();
   WideMaxImpulse* max_data = max_impulse_.empty() ? nullptr : max_impulse_.data();
   const auto scalar_pass = [&](auto&& fn) {
     for (ContactConstraint& c : scalar_) fn(c);
   };
-  const auto wide_pass = [&](auto&& fn) {
-    for (std::size_t c = 0; c < kColorCount; ++c) {
-      fn(wide_data + wide_begin_[c], wide_data + wide_begin_[c + 1],
-         max_data ? max_data + wide_begin_[c] : nullptr);
-    }
-  };
-  const Real inv_h = settings.inv_h, max_push = settings.contact_push_max_velocity;
-  for (int substep = 0; substep < settings.substeps; ++substep) {
-    integrate_velocities(bodies, params, settings);
-    if (joints) joints->warm_start(body_data);
-    if (wide_mode_) {
-      wide_pass([&](WideConstraint* b, WideConstraint* e, WideMaxImpulse*) {
-        warm_start_wide(body_data, b, e);
-      });
-    }
-    scalar_pass([&](ContactConstraint& c) { warm_start_one(body_data, c); });
-    if (joints) {
-      for (int i = 0; i < settings.joint_iterations; ++i) joints->solve(body_data, true);
-    }
-    if (wide_mode_) {
-      wide_pass([&](WideConstraint* b, WideConstraint* e, WideMaxImpulse* m) {
-        solve_wide(body_data, b, e, m, inv_h, max_push, true);
-      });
-    }
-    scalar_pass([&](ContactConstraint& c) { solve_one(body_data, c, inv_h, max_push, true); });
-    integrate_positions(bodies, settings.h);
-    if (joints) joints->solve(body_data, false);
-    if (wide_mode_) {
-      wide_pass([&](WideConstraint* b, WideConstraint* e, WideMaxImpulse* m) {
-        solve_wide(body_data, b, e, m, inv_h, max_push, false);
-      });
-    }
-    scalar_pass([&](ContactConstraint& c) { solve_one(body_data, c, inv_h, max_push, false); });
-  }
   if (!bouncy_) return;
   // Restitution, once per step and rare: one at a time, colours first, then the overflow.
   const Real threshold = settings.restitution_threshold;

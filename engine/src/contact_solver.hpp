@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mink/geometry/types.hpp"
+#include "stage_runner.hpp"
 
 namespace mink::detail {
 
@@ -70,6 +71,7 @@ struct SolverSettings {
 // Four constraints side by side, one per lane, for the wide (SIMD) path.
 struct WideConstraint;
 class JointStages;
+
 struct WideMaxImpulse;
 
 // The bodies of one constraint (indices into the solver body array), and whether the solver
@@ -102,13 +104,18 @@ class ContactSolver {
   // false keeps every constraint scalar and solves them one at a time in the same colour
   // order: the slow twin the tests compare the SIMD path against (the results are bitwise
   // equal).
-  void begin(std::span<const ConstraintBodies> constraints, std::int32_t still, bool wide);
-  // Constraint `index` (as passed to begin), once each, then finish().
-  void set(std::uint32_t index, const ContactConstraint& constraint);
+  // `workers`: how many workers may call set() at once.
+  void begin(std::span<const ConstraintBodies> constraints, std::int32_t still, bool wide,
+             std::uint32_t workers);
+  // Constraint `index` (as passed to begin), once each, from any worker (each index writes
+  // only its own slot), then finish().
+  void set(std::uint32_t index, const ContactConstraint& constraint, std::uint32_t worker);
   void finish();
   // `joints`, when given, runs its part of each stage before the contacts.
+  // The stages run on the task runner's workers, each colour split into blocks; the result
+  // does not depend on the worker count.
   void solve(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
-             const SolverSettings& settings, JointStages* joints);
+             const SolverSettings& settings, JointStages* joints, TaskRunner& tasks);
   // The accumulated impulses of constraint `index` after solve().
   void impulses(std::uint32_t index, Real normal[2], Real tangent[2]) const;
 
@@ -132,6 +139,16 @@ class ContactSolver {
   std::vector<WideMaxImpulse> max_impulse_;
   // Wide mode with restitution: scalar copies of the bouncing constraints, in colour order.
   std::vector<std::pair<std::uint32_t, ContactConstraint>> restitution_;
+  // What set() finds per worker, merged by finish() in slot order.
+  struct alignas(64) WorkerFindings {
+    bool bouncy = false;
+    std::vector<std::pair<std::uint32_t, ContactConstraint>> restitution;
+  };
+  std::vector<WorkerFindings> findings_;
+  struct Stage;
+  std::vector<Stage> stages_;               // one substep's stages
+  std::vector<std::uint32_t> stage_blocks_;  // blocks per stage, every substep
+  StageRunner stage_runner_;
 };
 
 }  // namespace mink::detail

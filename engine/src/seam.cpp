@@ -100,7 +100,7 @@ void WorldState::update_seams(std::uint32_t shape_index, bool removing) {
 // edge (or a corner next to one), the manifold is built again against the nearest uncovered
 // edge as a chain segment whose covered neighbours continue it flat. False when the manifold
 // stands as it was.
-bool WorldState::smooth_seam(detail::Contact& c, Real speculative_distance) {
+bool WorldState::smooth_seam(detail::Contact& c, Real speculative_distance) const {
   const bool seam_on_a = !shapes[c.shape_a].internal_edges.empty();
   const Shape& seam = shapes[seam_on_a ? c.shape_a : c.shape_b];
   const Shape& other = shapes[seam_on_a ? c.shape_b : c.shape_a];

@@ -92,15 +92,15 @@ void WorldState::prepare_contacts() {
     constraint_contacts.swap(sorted_contacts);
     constraint_bodies.swap(sorted_bodies);
   }
-  contact_solver.begin(constraint_bodies, still, def.simd_solver);
+  contact_solver.begin(constraint_bodies, still, def.simd_solver, tasks.workers());
 
   // Per-constraint body data comes from the compact solver arrays, not the body records.
   const auto info = [&](std::uint32_t body, std::int32_t index) {
     if (index != still) return solver_info[static_cast<std::size_t>(index)];
     return detail::SolverBodyInfo{bodies[body].center.x(), bodies[body].center.y(), 0, 0};
   };
-  detail::ContactConstraint k;
-  for (std::uint32_t r = 0; r < constraint_contacts.size(); ++r) {
+  const auto build = [&](std::uint32_t r, std::uint32_t worker) {
+    detail::ContactConstraint k;
     const Contact& c = contacts[constraint_contacts[r]];
     const detail::ConstraintBodies& cb = constraint_bodies[r];
     const detail::SolverBodyInfo a = info(c.body_a, cb.a), b = info(c.body_b, cb.b);
@@ -151,12 +151,35 @@ void WorldState::prepare_contacts() {
       const Real dvy = (sb.vy + sb.w * p.bx) - (sa.vy + sa.w * p.ax);
       p.relative_velocity = dvx * k.nx + dvy * k.ny;
     }
-    contact_solver.set(r, k);
-  }
+    contact_solver.set(r, k, worker);
+  };
+  // Each constraint is built into its own slot, so they are built in parallel.
+  tasks.parallel_for(static_cast<std::uint32_t>(constraint_contacts.size()), 256,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
+                       for (std::uint32_t r = begin; r < end; ++r) build(r, worker);
+                     });
   contact_solver.finish();
 
   counters.constraint_colors = contact_solver.color_count();
   counters.overflow_constraints = contact_solver.overflow_count();
+}
+
+void WorldState::write_back(std::uint32_t solver_index) {
+  Body& b = bodies[solver_to_body[solver_index]];
+  const detail::SolverBody& sb = solver_bodies[solver_index];
+  b.previous_origin = b.origin;
+  b.previous_rotation = b.rotation;
+  b.moved_step = step_count;
+  b.velocity = Vec2(sb.vx, sb.vy);
+  b.angular_velocity = sb.w;
+  b.center += Vec2(sb.dpx, sb.dpy);
+  const Real c = sb.qc * b.rotation.cos - sb.qs * b.rotation.sin;
+  const Real s = sb.qs * b.rotation.cos + sb.qc * b.rotation.sin;
+  const Real inv_length = 1 / std::sqrt(c * c + s * s);
+  b.rotation = {c * inv_length, s * inv_length};
+  b.origin = b.center - b.rotation.apply(b.local_center);
+  b.force = Vec2(0, 0);
+  b.torque = 0;
 }
 
 void WorldState::solve() {
@@ -170,11 +193,19 @@ void WorldState::solve() {
   settings.substeps = substeps;
   settings.joint_iterations = def.joint_iterations;
   contact_solver.solve(solver_bodies, solver_params, settings,
-                       joint_stages.empty() ? nullptr : &joint_stages);
+                       joint_stages.empty() ? nullptr : &joint_stages, tasks);
 
+  // Impulses back to the contacts and poses back to the bodies, each its own record, in
+  // parallel; hit events after, in constraint order.
+  tasks.parallel_for(static_cast<std::uint32_t>(constraint_contacts.size()), 256,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       for (std::uint32_t r = begin; r < end; ++r) {
+                         Contact& c = contacts[constraint_contacts[r]];
+                         contact_solver.impulses(r, c.normal_impulse, c.tangent_impulse);
+                       }
+                     });
   for (std::uint32_t r = 0; r < constraint_contacts.size(); ++r) {
-    Contact& c = contacts[constraint_contacts[r]];
-    contact_solver.impulses(r, c.normal_impulse, c.tangent_impulse);
+    const Contact& c = contacts[constraint_contacts[r]];
     // A hit: the shapes met fast and the contact pushed (a speculative point that never
     // closed does not count).
     if (c.hit_events && c.approach_speed > def.hit_event_threshold &&
@@ -185,40 +216,33 @@ void WorldState::solve() {
   }
 
   // Write poses back: centre moved by dp, rotation composed with the step's rotation.
-  for (std::size_t si = 0; si < solver_to_body.size(); ++si) {
-    Body& b = bodies[solver_to_body[si]];
-    const detail::SolverBody& sb = solver_bodies[si];
-    b.previous_origin = b.origin;
-    b.previous_rotation = b.rotation;
-    b.moved_step = step_count;
-    b.velocity = Vec2(sb.vx, sb.vy);
-    b.angular_velocity = sb.w;
-    b.center += Vec2(sb.dpx, sb.dpy);
-    const Real c = sb.qc * b.rotation.cos - sb.qs * b.rotation.sin;
-    const Real s = sb.qs * b.rotation.cos + sb.qc * b.rotation.sin;
-    const Real inv_length = 1 / std::sqrt(c * c + s * s);
-    b.rotation = {c * inv_length, s * inv_length};
-    b.origin = b.center - b.rotation.apply(b.local_center);
-    b.force = Vec2(0, 0);
-    b.torque = 0;
-  }
+  tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 256,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       for (std::uint32_t si = begin; si < end; ++si) write_back(si);
+                     });
 }
 
 void WorldState::finish_step() {
   const Real linear_tolerance_squared = def.linear_sleep_tolerance * def.linear_sleep_tolerance;
   const Real angular_tolerance_squared = def.angular_sleep_tolerance * def.angular_sleep_tolerance;
+  // Boxes and sleep timers per body in parallel; the broadphase takes the boxes after, in order.
+  tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 128,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       for (std::uint32_t si = begin; si < end; ++si) {
+                         Body& b = bodies[solver_to_body[si]];
+                         for (std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b, dt);
+                         if (!def.enable_sleep || !b.allow_sleep || b.type != BodyType::dynamic ||
+                             b.velocity.squaredNorm() > linear_tolerance_squared ||
+                             b.angular_velocity * b.angular_velocity > angular_tolerance_squared) {
+                           b.sleep_time = 0;
+                         } else {
+                           b.sleep_time += dt;
+                         }
+                       }
+                     });
   for (const std::uint32_t i : solver_to_body) {
-    Body& b = bodies[i];
-    for (std::uint32_t s : b.shapes) {
-      update_shape_aabb(shapes[s], b, dt);
+    for (std::uint32_t s : bodies[i].shapes) {
       if (shapes[s].proxy != null_proxy) broadphase.move_proxy(shapes[s].proxy, shapes[s].aabb);
-    }
-    if (!def.enable_sleep || !b.allow_sleep || b.type != BodyType::dynamic ||
-        b.velocity.squaredNorm() > linear_tolerance_squared ||
-        b.angular_velocity * b.angular_velocity > angular_tolerance_squared) {
-      b.sleep_time = 0;
-    } else {
-      b.sleep_time += dt;
     }
   }
   // Move events in body slot order: the simulated bodies, and those that fell asleep.

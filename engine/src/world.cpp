@@ -58,6 +58,10 @@ void check_world_def(const WorldDef& def) {
   require(def.linear_sleep_tolerance >= 0 && def.angular_sleep_tolerance >= 0,
           "WorldDef sleep tolerances must be non-negative");
   require(def.max_steps_per_advance >= 1, "WorldDef.max_steps_per_advance must be at least 1");
+  require(def.worker_count >= 1 && def.worker_count <= 256,
+          "WorldDef.worker_count must be 1..256, got " + std::to_string(def.worker_count));
+  require((def.task_system.enqueue == nullptr) == (def.task_system.finish == nullptr),
+          "WorldDef.task_system needs both enqueue and finish, or neither");
 }
 
 }  // namespace
@@ -65,6 +69,7 @@ void check_world_def(const WorldDef& def) {
 World::World(const WorldDef& def) : state_(std::make_unique<WorldState>()) {
   check_world_def(def);
   state_->def = def;
+  state_->tasks.configure(def.worker_count, def.task_system);
   // Serial numbers start at 1 so that a default id (world 0) never names a live object.
   static std::atomic<std::uint32_t> next_serial{1};
   state_->serial = next_serial.fetch_add(1);

@@ -16,6 +16,7 @@
 #include "mink/engine/world.hpp"
 #include "sensor.hpp"
 #include "shape.hpp"
+#include "task_runner.hpp"
 
 namespace mink {
 
@@ -23,6 +24,7 @@ namespace mink {
 // shape, contact, sensor, island, the solver stages); this is where they meet.
 struct WorldState {
   WorldDef def;
+  detail::TaskRunner tasks;  // the parallel phases of a step run here
   std::uint32_t serial = 0;  // this world's number, carried by every id it issues
   detail::IdPool<detail::Body> bodies;
   detail::IdPool<detail::Shape> shapes;
@@ -45,6 +47,7 @@ struct WorldState {
   // step): a step visits these and their contacts only, so a sleeping island costs nothing.
   std::vector<std::uint32_t> awake_list;
   std::vector<std::uint32_t> step_contacts;  // contacts of moving bodies this step, in order
+  std::vector<std::uint8_t> collide_changes;  // per step contact: what collide() must update
 
   std::vector<ContactBeginEvent> begin_events;
   std::vector<ContactEndEvent> end_events;
@@ -106,7 +109,7 @@ struct WorldState {
   void refresh_proxy(std::uint32_t shape_index);
   // seam.cpp
   void update_seams(std::uint32_t shape_index, bool removing);
-  bool smooth_seam(detail::Contact& contact, Real speculative_distance);
+  bool smooth_seam(detail::Contact& contact, Real speculative_distance) const;
   // contact.cpp
   void destroy_contact(std::uint32_t index);
   void set_touching(detail::Contact& contact, bool touching);
@@ -118,6 +121,7 @@ struct WorldState {
   void destroy_contacts_between(std::uint32_t body_a, std::uint32_t body_b);
   bool should_make_contact(std::uint32_t shape_a, std::uint32_t shape_b) const;
   void update_pairs();
+  bool update_manifold(detail::Contact& contact) const;
   void collide();
   // sensor.cpp
   void update_sensors();
@@ -141,6 +145,8 @@ struct WorldState {
   // solver_stages.cpp
   void prepare_contacts();
   void solve();
+  // Solver body `solver_index`'s velocity and pose back into its body record.
+  void write_back(std::uint32_t solver_index);
   void finish_step();
 };
 

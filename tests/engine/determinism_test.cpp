@@ -1,6 +1,5 @@
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cstdint>
 #include <cstdio>
 
@@ -9,27 +8,6 @@
 
 namespace mink {
 namespace {
-
-// FNV-1a over the bit patterns of every body's position, angle and velocities.
-std::uint64_t state_hash(const World& world) {
-  std::uint64_t hash = 1469598103934665603ull;
-  const auto mix = [&](Real value) {
-    const auto bits = std::bit_cast<std::uint64_t>(value);
-    for (int byte = 0; byte < 8; ++byte) {
-      hash ^= (bits >> (8 * byte)) & 0xff;
-      hash *= 1099511628211ull;
-    }
-  };
-  for (const BodyId id : world.bodies()) {
-    mix(world.position(id).x());
-    mix(world.position(id).y());
-    mix(world.angle(id));
-    mix(world.linear_velocity(id).x());
-    mix(world.linear_velocity(id).y());
-    mix(world.angular_velocity(id));
-  }
-  return hash;
-}
 
 // A busy scene: random hulls of 3..64 vertices raining into a box, 300 steps, some of them
 // destroyed and replaced on the way, sleeping on.
@@ -48,7 +26,7 @@ std::uint64_t run_busy_scene(bool simd_solver) {
     }
     world.step();
   }
-  return state_hash(world);
+  return test::state_hash(world);
 }
 
 // Recorded from this test's own run. Any change to the solver, the narrowphase, the
@@ -75,11 +53,11 @@ TEST(Determinism, SimdSolverMatchesItsScalarTwinBitForBit) {
 TEST(Determinism, LargeStackSimdMatchesScalarTwin) {
   const auto [wide, scalar] =
       test::stepped_twins(20, 120, [](WorldDef& def) { def.simd_solver = false; });
-  EXPECT_EQ(state_hash(wide), state_hash(scalar));
+  EXPECT_EQ(test::state_hash(wide), test::state_hash(scalar));
 }
 
 // Lanes sharing a kinematic body (the tumbler's drum, made kinematic again, touches many boxes
-// in one colour) write back its unchanged velocity: still bitwise equal to the twin.
+// in one colour) leave its velocity alone: still bitwise equal to the twin.
 TEST(Determinism, KinematicSharedAcrossLanesMatchesScalarTwin) {
   SceneDef scene = builtin_scene("tumbler");
   ASSERT_EQ(scene.joints.size(), 1u);
@@ -95,7 +73,7 @@ TEST(Determinism, KinematicSharedAcrossLanesMatchesScalarTwin) {
     scalar.step();
   }
   EXPECT_EQ(wide.counters().overflow_constraints, 0u);
-  EXPECT_EQ(state_hash(wide), state_hash(scalar));
+  EXPECT_EQ(test::state_hash(wide), test::state_hash(scalar));
 }
 
 }  // namespace

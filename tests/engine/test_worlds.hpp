@@ -1,13 +1,35 @@
 #pragma once
 
+#include <bit>
 #include <cmath>
-
+#include <cstdint>
 #include <utility>
 
 #include "mink/engine/scene.hpp"
 #include "mink/engine/world.hpp"
 
 namespace mink::test {
+
+// FNV-1a over the bit patterns of every body's position, angle and velocities.
+inline std::uint64_t state_hash(const World& world) {
+  std::uint64_t hash = 1469598103934665603ull;
+  const auto mix = [&](Real value) {
+    const auto bits = std::bit_cast<std::uint64_t>(value);
+    for (int byte = 0; byte < 8; ++byte) {
+      hash ^= (bits >> (8 * byte)) & 0xff;
+      hash *= 1099511628211ull;
+    }
+  };
+  for (const BodyId id : world.bodies()) {
+    mix(world.position(id).x());
+    mix(world.position(id).y());
+    mix(world.angle(id));
+    mix(world.linear_velocity(id).x());
+    mix(world.linear_velocity(id).y());
+    mix(world.angular_velocity(id));
+  }
+  return hash;
+}
 
 // Default settings with sleeping off, so nothing stops moving under a test's feet.
 inline WorldDef free_world() {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "mink/engine/task_system.hpp"
 #include "mink/geometry/types.hpp"
 
 namespace mink {
@@ -58,6 +59,14 @@ struct WorldDef {
   /// the linear slop of where they were found, updating only the separations. false runs the
   /// narrowphase for every pair every step.
   bool reuse_manifolds = true;
+  /// @name Threads
+  /// A step runs its parallel phases (narrowphase, constraint preparation, each colour of the
+  /// solver, integration, bounding boxes) on this many workers, the calling thread among them.
+  /// The state after a step is bitwise the same at any worker count.
+  /// @{
+  int worker_count = 1;    ///< 1..256; 1 runs everything on the calling thread
+  TaskSystem task_system;  ///< null callbacks: the world's own pool of worker_count - 1 threads
+  /// @}
 };
 
 }  // namespace mink
