@@ -3,31 +3,41 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <utility>
+#include <vector>
 
+#include "mink/engine/joint_def.hpp"
+#include "mink/engine/scene_file.hpp"
 #include "mink/engine/shape_def.hpp"
 #include "mink/geometry/point_sets.hpp"
 #include "mink/render/bitmap_font.hpp"
-#include "mink/engine/scene_file.hpp"
 #include "text_wrap.hpp"
 
 namespace mink::cli {
 
 namespace {
 
-constexpr Real kFrameSeconds = 1.0 / 60.0;
-// The dragged point closes this fraction of its gap to the cursor per second (a stiff spring
-// without the spring's overshoot), capped so a fast flick does not tunnel through bodies.
-constexpr Real kDragRate = 12;
-constexpr Real kDragMaxSpeed = 40;
+// The drag's motor joint accelerates the grabbed body at up to kDragLift g: enough to carry
+// it anywhere on screen in a fraction of a second, while a flick over d metres reaches only
+// about sqrt(kDragLift g d) m/s (14 m/s over 1 m), so the body does not tunnel through others
+// and what it hits is pushed, not blown apart. The force is capped at what kHeavyBodies
+// typical bodies (the median dynamic mass) would get, so heavy bodies resist: one
+// kDragLift * kHeavyBodies = 100 typical masses heavy can just be held up, a heavier one not
+// even that (a force proportional to the mass alone would drag every body alike).
+constexpr Real kDragLift = 20;
+constexpr Real kHeavyBodies = 5;
+// The unit of those forces where the world has no gravity, m/s^2.
+constexpr Real kUnitGravity = 10;
 
 struct LayerKey {
   char key;
   DrawLayer layer;
   const char* name;
 };
-constexpr std::array<LayerKey, 8> kLayerKeys{{
+constexpr std::array<LayerKey, 9> kLayerKeys{{
     {'1', draw_shapes, "shapes"},
     {'2', draw_aabbs, "aabbs"},
     {'3', draw_contact_points, "contacts"},
@@ -36,12 +46,35 @@ constexpr std::array<LayerKey, 8> kLayerKeys{{
     {'6', draw_velocities, "velocities"},
     {'7', draw_sleep_state, "sleep"},
     {'8', draw_centers_of_mass, "centres"},
+    {'9', draw_joints, "joints"},
 }};
 
 std::string lower(std::string_view text) {
   std::string out(text);
   for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return out;
+}
+
+// The median mass of the world's dynamic bodies (there is at least the one being grabbed).
+Real typical_mass(const World& world) {
+  std::vector<Real> masses;
+  for (const BodyId body : world.bodies()) {
+    if (world.body_type(body) == BodyType::dynamic) masses.push_back(world.mass(body));
+  }
+  const auto middle = masses.begin() + static_cast<std::ptrdiff_t>(masses.size() / 2);
+  std::nth_element(masses.begin(), middle, masses.end());
+  return *middle;
+}
+
+// The body under `point`: a dynamic one first, else a static or kinematic one.
+std::optional<BodyId> body_at(const World& world, const Vec2& point) {
+  std::optional<BodyId> found;
+  for (const ShapeId shape : world.query_point(point)) {
+    const BodyId body = world.shape_body(shape);
+    if (world.body_type(body) == BodyType::dynamic) return body;
+    if (!found) found = body;
+  }
+  return found;
 }
 
 }  // namespace
@@ -51,13 +84,17 @@ Sandbox::Sandbox(Renderer& renderer, const std::string& scene)
 
 Sandbox::Sandbox(Renderer& renderer, std::string name, SceneDef scene)
     : renderer_(renderer), scene_(std::move(name)), scene_def_(std::move(scene)) {
-  renderer_.layers = draw_shapes | draw_contact_points;
+  renderer_.layers = draw_shapes | draw_contact_points | draw_joints;
   reset();
 }
 
 void Sandbox::reset() {
   world_ = build_world(scene_def_);
-  dragged_.reset();
+  // The old world's ids mean nothing in the new one.
+  world_anchor_.reset();
+  drag_.reset();
+  joint_first_.reset();
+  joint_message_.clear();
   drops_ = 0;
   fit_camera();
 }
@@ -102,6 +139,11 @@ void Sandbox::key(std::string_view name) {
     scene_ = std::string(at == names.end() || at + 1 == names.end() ? names.front() : *(at + 1));
     scene_def_ = builtin_scene(scene_);
     reset();
+  } else if (k == "j") {
+    release();
+    joint_mode_ = !joint_mode_;
+    joint_first_.reset();
+    joint_message_.clear();
   } else if (k == "escape" || k == "q") {
     quit_ = true;
   } else if (k.size() == 1) {
@@ -111,17 +153,29 @@ void Sandbox::key(std::string_view name) {
   }
 }
 
+std::optional<BodyId> Sandbox::dragged() const {
+  if (!drag_) return std::nullopt;
+  return drag_->body;
+}
+
+std::optional<JointId> Sandbox::drag_joint() const {
+  if (!drag_) return std::nullopt;
+  return drag_->joint;
+}
+
 void Sandbox::mouse_down(const Vec2& pixel) {
   cursor_ = renderer_.camera().pixel_to_world(pixel);
-  for (const ShapeId shape : world_.query_point(cursor_)) {
-    const BodyId body = world_.shape_body(shape);
-    if (world_.body_type(body) != BodyType::dynamic) continue;
-    dragged_ = body;
-    grab_local_ = world_.pose(body).apply_inverse(cursor_);
-    world_.set_awake(body, true);
+  if (joint_mode_) {
+    pick_joint_body(cursor_);
     return;
   }
-  drop_hull(cursor_);
+  release();  // a press whose release the window never delivered
+  const std::optional<BodyId> body = body_at(world_, cursor_);
+  if (body && world_.body_type(*body) == BodyType::dynamic) {
+    grab(*body);
+  } else {
+    drop_hull(cursor_);
+  }
 }
 
 void Sandbox::mouse_move(const Vec2& pixel) {
@@ -130,7 +184,63 @@ void Sandbox::mouse_move(const Vec2& pixel) {
 
 void Sandbox::mouse_up(const Vec2& pixel) {
   mouse_move(pixel);
-  dragged_.reset();
+  release();
+}
+
+BodyId Sandbox::world_anchor() {
+  if (!world_anchor_) {
+    BodyDef anchor;
+    anchor.type = BodyType::static_body;
+    world_anchor_ = world_.create_body(anchor);
+  }
+  return *world_anchor_;
+}
+
+void Sandbox::grab(BodyId body) {
+  // The motor joint drives B's origin and angle, not a point of B. Holding the angle the body
+  // had when grabbed and aiming the origin where that angle puts the grabbed point under the
+  // cursor makes the grabbed point follow the cursor (rather than the centre), as a firm grip
+  // would. The anchor sits at the origin unrotated, so offsets in its frame are world ones.
+  const Pose pose = world_.pose(body);
+  const Real mass = world_.mass(body);
+  const Real gravity = world_.def().gravity.norm();
+  MotorJointDef def;
+  def.body_a = world_anchor();
+  def.body_b = body;
+  def.linear_offset = pose.position;
+  def.angular_offset = world_.angle(body);
+  def.max_force = kDragLift * (gravity > 0 ? gravity : kUnitGravity) *
+                  std::min(mass, kHeavyBodies * typical_mass(world_));
+  // The same bound on the acceleration of a point at the body's radius of gyration.
+  def.max_torque = def.max_force * std::sqrt(world_.rotational_inertia(body) / mass);
+  drag_ = Drag{body, world_.create_joint(def), pose.apply_inverse(cursor_), def.angular_offset};
+}
+
+void Sandbox::release() {
+  if (!drag_) return;
+  if (world_.is_valid(drag_->joint)) world_.destroy_joint(drag_->joint);
+  drag_.reset();
+}
+
+void Sandbox::pick_joint_body(const Vec2& world_point) {
+  const std::optional<BodyId> hit = body_at(world_, world_point);
+  const BodyId body = hit ? *hit : world_anchor();
+  if (!joint_first_) {
+    joint_first_ = body;
+    joint_message_.clear();
+    return;
+  }
+  const BodyId first = *joint_first_;
+  joint_first_.reset();
+  if (first == body) {
+    joint_message_ = "A and B are the same body: no joint";
+  } else if (world_.body_type(first) != BodyType::dynamic &&
+             world_.body_type(body) != BodyType::dynamic) {
+    joint_message_ = "neither A nor B moves: no joint";
+  } else {
+    world_.create_joint(revolute_joint_at(world_, first, body, world_point));
+    joint_message_ = "revolute joint made";
+  }
 }
 
 void Sandbox::drop_hull(const Vec2& world_point) {
@@ -150,16 +260,11 @@ void Sandbox::drop_hull(const Vec2& world_point) {
 }
 
 void Sandbox::step() {
-  if (dragged_ && world_.is_valid(*dragged_)) {
-    // Kinematic drag through the World API: each step, the grabbed point is given the
-    // velocity that moves it towards the cursor; spin is damped so the body does not whirl.
-    const BodyId body = *dragged_;
-    const Vec2 grabbed = world_.pose(body).apply(grab_local_);
-    Vec2 velocity = kDragRate * (cursor_ - grabbed);
-    if (velocity.norm() > kDragMaxSpeed) velocity *= kDragMaxSpeed / velocity.norm();
-    world_.set_linear_velocity(body, velocity);
-    world_.set_angular_velocity(body, 0.9 * world_.angular_velocity(body));
-    world_.set_awake(body, true);
+  if (drag_ && world_.is_valid(drag_->joint)) {
+    const Vec2 origin = cursor_ - Rotation::from_angle(drag_->angle).apply(drag_->grab_local);
+    world_.set_motor_target(drag_->joint, origin, drag_->angle);
+    // A body resting at the target would fall asleep and not notice the cursor move on.
+    world_.set_awake(drag_->body, true);
   }
   world_.step();
 }
@@ -170,14 +275,19 @@ void Sandbox::frame() {
   renderer_.begin_frame(background);
   world_.draw(renderer_);
   char line[200];
-  std::snprintf(
-      line, sizeof line,
-      "scene %s%s\nstep %llu  time %.2f s\nbodies %zu  contacts %zu\nlayers:", scene_.c_str(),
-      paused_ ? "  [paused]" : "", static_cast<unsigned long long>(world_.step_count()),
-      world_.time(), world_.body_count(), world_.counters().touching_contacts);
+  std::snprintf(line, sizeof line,
+                "scene %s%s\nstep %llu  time %.2f s\nbodies %zu  contacts %zu  joints %zu\nlayers:",
+                scene_.c_str(), paused_ ? "  [paused]" : "",
+                static_cast<unsigned long long>(world_.step_count()), world_.time(),
+                world_.body_count(), world_.counters().touching_contacts, world_.joint_count());
   std::string text = line;
   for (const LayerKey& layer : kLayerKeys) {
     if (renderer_.layers & layer.layer) text.append(" ").append(layer.name);
+  }
+  if (joint_mode_) {
+    text += joint_first_ ? "\njoint mode: click body B (the joint goes there)"
+                         : "\njoint mode: click body A (empty space: the world)";
+    if (!joint_message_.empty()) text.append("\n").append(joint_message_);
   }
   renderer_.draw_overlay(text);
   // The help line at the bottom, broken between its entries when the window is narrow.

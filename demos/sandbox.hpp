@@ -16,9 +16,12 @@ namespace mink::cli {
 // window loop of `mink sandbox` feeds it SDL events; tests feed it directly.
 //
 // Keys: space pauses, s single-steps while paused, r resets, n switches to the next scene,
-// 1-8 toggle the debug layers (shapes, AABBs, contact points, contact normals, broadphase
-// pairs, velocities, sleep state, centres of mass), Escape or q quits. The left mouse button
-// on a dynamic body drags it; on empty space it drops a random hull there.
+// 1-9 toggle the debug layers (shapes, AABBs, contact points, contact normals, broadphase
+// pairs, velocities, sleep state, centres of mass, joints), j toggles joint mode, Escape or q
+// quits. The left mouse button on a dynamic body drags it with a motor joint (the grabbed
+// point follows the cursor); on empty space it drops a random hull there. In joint mode a
+// first click picks body A (empty space: the static world), a second click picks body B and
+// pins the two with a revolute joint at that second click point.
 class Sandbox {
  public:
   // `scene` is a built-in's name or a scene file, as for `mink run`; throws
@@ -40,19 +43,27 @@ class Sandbox {
   const std::string& scene() const { return scene_; }
   const World& world() const { return world_; }
   std::uint32_t layers() const { return renderer_.layers; }
-  // The body being dragged, if any.
-  std::optional<BodyId> dragged() const { return dragged_; }
+  // The body being dragged, if any, and the motor joint that drags it.
+  std::optional<BodyId> dragged() const;
+  std::optional<JointId> drag_joint() const;
+  bool joint_mode() const { return joint_mode_; }
+  // Body A of the revolute joint being made: picked by joint mode's first click.
+  std::optional<BodyId> joint_first() const { return joint_first_; }
 
   static constexpr Color background{0.12f, 0.12f, 0.14f, 1};
   static constexpr std::string_view help =
-      "drag: move body  click: drop hull  space: pause  s: step  r: reset  n: next scene  "
-      "1-8: layers  q: quit";
+      "drag: move body  click: drop hull  j: joint mode (click A, click B)  space: pause  "
+      "s: step  r: reset  n: next scene  1-9: layers  q: quit";
 
  private:
   void reset();
   void fit_camera();
   void step();
   void drop_hull(const Vec2& world_point);
+  void grab(BodyId body);
+  void release();
+  void pick_joint_body(const Vec2& world_point);
+  BodyId world_anchor();
 
   Renderer& renderer_;
   std::string scene_;
@@ -62,9 +73,20 @@ class Sandbox {
   bool step_once_ = false;
   bool quit_ = false;
   std::uint64_t drops_ = 0;  // seeds the dropped hulls' shapes, so runs repeat exactly
-  std::optional<BodyId> dragged_;
-  Vec2 grab_local_{0, 0};  // the grabbed point in the dragged body's frame
-  Vec2 cursor_{0, 0};      // world
+  // A static body without shapes at the origin: body A of the drag's motor joint and of
+  // joints pinned to empty space. Made when first needed; a reset drops it with the world.
+  std::optional<BodyId> world_anchor_;
+  struct Drag {
+    BodyId body;
+    JointId joint;    // motor joint from world_anchor_ to body
+    Vec2 grab_local;  // the grabbed point in the body's frame
+    Real angle;       // the body's angle when grabbed, held while dragged
+  };
+  std::optional<Drag> drag_;
+  bool joint_mode_ = false;
+  std::optional<BodyId> joint_first_;
+  std::string joint_message_;  // what joint mode's last click did, shown in the overlay
+  Vec2 cursor_{0, 0};          // world
   // The help text wrapped for help_columns_ characters, redone only when the width changes.
   std::size_t help_columns_ = 0;
   std::string wrapped_help_;

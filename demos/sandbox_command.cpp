@@ -11,12 +11,12 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "mink/engine/scene_file.hpp"
 #include "mink/error.hpp"
 #include "mink/render/input_script.hpp"
 #include "mink/render/png_file.hpp"
 #include "mink/render/sdl_window.hpp"
 #include "sandbox.hpp"
-#include "mink/engine/scene_file.hpp"
 #include "scene_view.hpp"
 
 namespace mink::cli {
@@ -111,8 +111,9 @@ Action add_sandbox_command(CLI::App& app, Streams streams) {
   auto options = std::make_shared<SandboxOptions>();
   CLI::App* command = app.add_subcommand(
       "sandbox",
-      "An SDL2 window on a scene: drag bodies, click to drop hulls, space pause, s "
-      "step, r reset, n next scene, 1-8 debug layers, q quit.");
+      "An SDL2 window on a scene: drag bodies, click to drop hulls, j joint mode (click "
+      "body A or empty space, then body B: a revolute joint there), space pause, s step, r "
+      "reset, n next scene, 1-9 debug layers, q quit.");
   add_scene_argument(*command, options->scene);
   command->add_option("--script", options->script,
                       "timed input events, one a line: TIME key NAME | mouse_down X Y | "

@@ -7,13 +7,15 @@
 #include <string>
 
 #include "cli_test_support.hpp"
+#include "mink/engine/scene_file.hpp"
 #include "mink/render/png_file.hpp"
 #include "render_test_support.hpp"
-#include "mink/engine/scene_file.hpp"
+#include "sandbox_scenes.hpp"
 
 namespace {
 
 using mink_test::count_pixels;
+using mink_test::PixelRect;
 using mink_test::Rgb;
 
 // World::draw's colours: an awake dynamic body, and an AABB outline.
@@ -65,6 +67,57 @@ TEST(SandboxWindow, ScriptedDropStepAndLayerToggle) {
   const mink::Image toggled =
       shoot("toggled", "0 key space\n0.1 key 2\n0.2 screenshot\n0.25 quit\n");
   EXPECT_GT(count_pixels(toggled, kAabb), 500);  // key 2 turned the AABB layer on
+}
+
+// The stack scene's top box, dragged sideways off the stack by scripted mouse events through
+// SDL: the frame shows it where the cursor went and no longer on the stack. Where the box is
+// comes from the first frame's pixels, so the test does not assume the sandbox's camera.
+TEST(SandboxWindow, DragsTheTopBoxOffAStack) {
+  const auto scene_file = mink_test::temp_path("mink_sandbox_stack.json");
+  mink::save_scene_file(scene_file, mink_test::stack_scene());
+  const mink::Image before =
+      shoot("stack_before", "0.1 screenshot\n0.15 quit\n", scene_file.string());
+  // The top box: the run of its colour in the highest row that has any (the heavy box is two
+  // boxes lower).
+  int top_row = -1;
+  int left = 0;
+  int right = 0;
+  for (int y = 0; y < before.height && top_row < 0; ++y) {
+    for (int x = 0; x < before.width; ++x) {
+      if (rgb(before, x, y) != kDynamic) continue;
+      if (top_row < 0) {
+        top_row = y;
+        left = x;
+      } else if (x != right + 1) {
+        break;
+      }
+      right = x;
+    }
+  }
+  ASSERT_GE(top_row, 0) << "no box in the first frame";
+  const int side = right - left + 1;
+  ASSERT_GT(side, 20) << "the box is too small to drag by pixels";
+  const int x0 = (left + right) / 2;
+  const int y0 = top_row + side / 2;
+  const int x1 = x0 + 5 * side / 2;
+  const int y1 = y0 - side / 2;
+  ASSERT_LT(x1 + side, before.width);
+  ASSERT_GE(y1 - side, 0);
+  const std::string script =
+      "0.2 mouse_down " + std::to_string(x0) + " " + std::to_string(y0) + "\n0.3 mouse_move " +
+      std::to_string(x0 + side) + " " + std::to_string(y0 - side / 4) + "\n0.4 mouse_move " +
+      std::to_string(x1) + " " + std::to_string(y1) + "\n1.4 screenshot\n1.45 quit\n";
+  const mink::Image after = shoot("stack_after", script, scene_file.string());
+  std::filesystem::remove(scene_file);
+  // The squares of 80% of the box's side about the cursor and about where the box was: the
+  // first all box (but for the joint's marks at the box's centre), the second none.
+  const int half = 2 * side / 5;
+  const auto near = [&](int x, int y) {
+    return count_pixels(after, kDynamic, PixelRect{x - half, y - half, x + half, y + half});
+  };
+  EXPECT_GT(near(x1, y1), 0.9 * (2 * half) * (2 * half)) << script;
+  EXPECT_EQ(near(x0, y0), 0) << script;
+  EXPECT_GT(near(x0, y0 + side), 0.9 * (2 * half) * (2 * half));  // the middle box stays
 }
 
 // The SCENE argument and --size are those of `mink run`: a scene file opens, and a bad size or
