@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 CTEST_FLAGS ?= --output-on-failure
 
-.PHONY: all deps build demo test bench docs format clean sanitize-test
+.PHONY: all deps build demo test bench docs format clean sanitize-test tsan-test
 
 all: build
 
@@ -51,6 +51,14 @@ test: deps-test
 sanitize-test: deps-test
 	$(MAKE) test BUILD_DIR=build-asan BUILD_TYPE=RelWithDebInfo \
 	  CMAKE_FLAGS="$(CMAKE_FLAGS) -DMINK_SANITIZE=ON"
+
+# The engine tests (the parallel step's determinism tests among them) under ThreadSanitizer,
+# in their own build dir; the physics libraries and their tests only.
+tsan-test: deps-test
+	cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMINK_BUILD_TESTS=ON \
+	  -DMINK_TSAN=ON $(CMAKE_FLAGS)
+	cmake --build build-tsan -j $(JOBS) --target mink_engine_tests
+	TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/bin/mink_engine_tests
 
 bench: deps-bench
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DMINK_BUILD_BENCH=ON $(CMAKE_FLAGS)

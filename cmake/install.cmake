@@ -98,6 +98,7 @@ set(MINK_PC_LIBS "")
 foreach(layer engine narrowphase broadphase geometry)  # users before what they use
   string(APPEND MINK_PC_LIBS " -lmink_${layer}")
 endforeach()
+string(APPEND MINK_PC_LIBS " -pthread")  # the engine's worker pool
 if(MINK_SANITIZE AND NOT BUILD_SHARED_LIBS)
   # Sanitizer-instrumented static code needs the sanitizer runtimes in the final link.
   string(APPEND MINK_PC_LIBS " -fsanitize=address,undefined")

@@ -10,6 +10,8 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "body_trace.hpp"
 #include "commands.hpp"
@@ -42,6 +44,8 @@ struct RunOptions {
   std::string save;
   std::string gl = "osmesa";
   std::string size = "1280x720";
+  int threads = 1;
+  std::vector<std::string> world_settings;  // KEY=VALUE, in order
 };
 
 // A bar redrawn in place on a terminal; elsewhere (logs, pipes) a line every tenth of the run.
@@ -90,7 +94,18 @@ int run_scene(const RunOptions& options, Streams streams) {
   parse_frame_size(options.size, width, height);
   const GlBackend backend = parse_gl_backend(options.gl);
   // The whole scene is read and checked before any output exists.
-  const SceneDef scene = resolve_scene(options.scene);
+  SceneDef scene = resolve_scene(options.scene);
+  for (const std::string& setting : options.world_settings) {
+    const std::size_t equals = setting.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      throw InvalidArgumentError("--world takes KEY=VALUE (a key of the scene file's world "
+                                 "object), got '" +
+                                 setting + "'");
+    }
+    set_world_setting(scene.world, std::string_view(setting).substr(0, equals),
+                      std::string_view(setting).substr(equals + 1));
+  }
+  scene.world.worker_count = options.threads;
   World world = build_world(scene);
   // A fresh world's slot order is the scene's order: body i of the scene is bodies[i].
   const std::vector<BodyId> bodies = world.bodies();
@@ -130,7 +145,8 @@ int run_scene(const RunOptions& options, Streams streams) {
   std::ofstream stats;
   if (!options.stats.empty()) {
     stats = open_output_file(options.stats, "--stats file");
-    stats << "step,time,bodies,awake,pairs,contacts,kinetic_energy,step_ms\n";
+    stats << "step,time,bodies,awake,pairs,contacts,kinetic_energy,step_ms,pairs_ms,collide_ms,"
+             "islands_ms,prepare_ms,solve_ms,finish_ms\n";
   }
   std::optional<BodyTrace> trace;
   if (!options.trace.empty()) {
@@ -170,10 +186,13 @@ int run_scene(const RunOptions& options, Streams streams) {
     const StepCounters& c = world.counters();
     contacts_sum += c.touching_contacts;
     if (stats.is_open()) {
-      std::snprintf(line, sizeof line, "%llu,%.17g,%zu,%zu,%zu,%zu,%.17g,%.6f\n",
+      const StepProfile& p = world.profile();
+      std::snprintf(line, sizeof line,
+                    "%llu,%.17g,%zu,%zu,%zu,%zu,%.17g,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n",
                     static_cast<unsigned long long>(world.step_count()), world.time(),
                     world.body_count(), c.awake_bodies, c.broadphase_pairs, c.touching_contacts,
-                    kinetic_energy(world), ms);
+                    kinetic_energy(world), ms, p.pairs, p.collide, p.islands, p.prepare, p.solve,
+                    p.finish);
       stats << line;
     }
     if (trace) trace->write_step(world);
@@ -253,6 +272,16 @@ Action add_run_command(CLI::App& app, Streams streams) {
       ->excludes(video);
   command->add_option("--gl", options->gl, "headless GL backend: osmesa (default) or egl");
   command->add_option("--size", options->size, "frame size WIDTHxHEIGHT (default 1280x720)");
+  command
+      ->add_option("--threads", options->threads,
+                   "workers the step runs on, this thread among them (default 1); the results "
+                   "are bitwise the same at any count")
+      ->check(CLI::Range(1, 256));
+  command->add_option("--world", options->world_settings,
+                      "a world setting as KEY=VALUE, keys and values as in the scene file's "
+                      "world object (e.g. --world substeps=4 --world enable_sleep=false); "
+                      "repeatable, applied in order over the scene's own")
+      ->allow_extra_args(false);  // one setting per --world: the scene may follow it
   return [options, streams] { return run_scene(*options, streams); };
 }
 

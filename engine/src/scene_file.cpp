@@ -267,14 +267,18 @@ Json write_fields(std::span<const SceneField<Object>> fields, const Object& obje
   return out;
 }
 
-WorldDef read_world(const Json& value, const std::string& path) {
-  WorldDef world;
-  read_object(value, path, world_fields(), world);
+void check_world(const WorldDef& world, const std::string& path) {
   try {
     World check(world);  // settings valid one by one may still clash
   } catch (const Error& error) {
     throw SceneFileError(path, error.what());
   }
+}
+
+WorldDef read_world(const Json& value, const std::string& path) {
+  WorldDef world;
+  read_object(value, path, world_fields(), world);
+  check_world(world, path);
   return world;
 }
 
@@ -670,6 +674,16 @@ Json parse_json(std::string_view text, const std::string& source) {
 }
 
 }  // namespace
+
+void set_world_setting(WorldDef& world, std::string_view key, std::string_view value) {
+  const std::string path = "world." + std::string(key);
+  Json object = Json::object();
+  object[std::string(key)] = parse_json(value, path);
+  WorldDef changed = world;
+  read_object(object, "world", world_fields(), changed);
+  check_world(changed, path);
+  world = changed;
+}
 
 SceneDef parse_scene_json(std::string_view text, const std::string& source) {
   const Json root = parse_json(text, source);

@@ -46,7 +46,9 @@ TEST(RunCommand, StatsCsvHasOneRowPerStepAndTheIssueColumns) {
   ASSERT_EQ(r.code, 0) << r.err;
   const auto lines = split_lines(read_text(dir / "stats.csv"));
   ASSERT_EQ(lines.size(), 31u);
-  EXPECT_EQ(lines[0], "step,time,bodies,awake,pairs,contacts,kinetic_energy,step_ms");
+  EXPECT_EQ(lines[0],
+            "step,time,bodies,awake,pairs,contacts,kinetic_energy,step_ms,pairs_ms,collide_ms,"
+            "islands_ms,prepare_ms,solve_ms,finish_ms");
   const std::size_t bodies = builtin_scene("pyramid").bodies.size();
   for (std::size_t i = 1; i < lines.size(); ++i) {
     unsigned long long step = 0;
@@ -349,6 +351,47 @@ TEST(RunCommand, SecondsAndStepsAreExclusiveAndBadOptionsExit2) {
                      {"--size '101x100'", "both even and in 64..8192"});
   expect_usage_error({"pyramid", "--trace-every", "2"}, {"--trace-every", "--trace"});
   expect_usage_error({"pyramid", "--trace", "t.csv", "--trace-every", "0"}, {"--trace-every"});
+  expect_usage_error({"pyramid", "--no-render", "--threads", "0"}, {"--threads"});
+  expect_usage_error({"pyramid", "--no-render", "--world", "substeps"},
+                     {"--world takes KEY=VALUE", "'substeps'"});
+  expect_usage_error({"pyramid", "--no-render", "--world", "sub_steps=4"},
+                     {"world.sub_steps: unknown key"});
+  expect_usage_error({"pyramid", "--no-render", "--world", "substeps=0"},
+                     {"world.substeps", "1..1000"});
+  expect_usage_error({"pyramid", "--no-render", "--world", "enable_sleep=maybe"},
+                     {"world.enable_sleep", "not valid JSON"});
+}
+
+// --world changes the scene's settings before the run, in order, and a saved run keeps them.
+TEST(RunCommand, WorldSettingsApplyToAnyScene) {
+  const auto dir = fresh_dir("world_settings");
+  const CliResult r =
+      run_cli({"run", "--world", "substeps=4", "--world", "contact_hertz=30", "--world",
+               "substeps=3", "--world", "gravity=[0,-9.8]", "--world", "enable_sleep=false",
+               "pyramid", "--steps", "2", "--no-render", "--save", (dir / "s.json").string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const WorldDef world = load_scene_file(dir / "s.json").world;
+  EXPECT_EQ(world.substeps, 3);
+  EXPECT_EQ(world.contact_hertz, 30);
+  EXPECT_EQ(world.gravity, Vec2(0, -9.8));
+  EXPECT_FALSE(world.enable_sleep);
+}
+
+// Any worker count gives the same run: the traces are byte for byte equal.
+TEST(RunCommand, ThreadsGiveTheSameTrace) {
+  const auto dir = fresh_dir("threads");
+  std::string traces[3];
+  for (int i = 0; i < 3; ++i) {
+    const auto file = dir / ("trace" + std::to_string(i) + ".csv");
+    const CliResult r = run_cli({"run", "tumbler", "--steps", "120", "--no-render", "--threads",
+                                 std::to_string(i + 1), "--trace", file.string(), "--trace-every",
+                                 "10"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    traces[i] = read_text(file);
+  }
+  EXPECT_GT(traces[0].size(), 10000u);
+  EXPECT_EQ(traces[1], traces[0]);
+  EXPECT_EQ(traces[2], traces[0]);
 }
 
 // The file system failing is exit 4 with the path named, and nothing is run first.

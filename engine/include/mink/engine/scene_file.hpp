@@ -42,6 +42,13 @@ std::string scene_to_json(const SceneDef& scene);
 /// @throws OutputError (the environment failed) when the directory or file cannot be written
 void save_scene_file(const std::filesystem::path& path, const SceneDef& scene);
 
+/// @brief Changes one world setting, as `mink run --world KEY=VALUE` does: `key` as in the
+/// scene file's `world` object, `value` the JSON it would hold there (`4`, `false`,
+/// `[0, -9.8]`), checked exactly as the scene reader checks it. `world` is left as it was when
+/// the key or value is refused.
+/// @throws SceneFileError with the path "world.KEY" (an unknown key: "world.KEY: unknown key")
+void set_world_setting(WorldDef& world, std::string_view key, std::string_view value);
+
 /// @brief A built-in's name (builtin_scene_names), or else a path to a scene file.
 /// @throws InvalidArgumentError naming the built-ins when it is neither
 SceneDef resolve_scene(const std::string& name_or_path);
