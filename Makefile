@@ -41,6 +41,7 @@ demo: deps-test
 	@echo "  final state   out/final.json (resume: mink run out/final.json)"
 	@echo "  figures       out/paper/"
 	@echo "  Box2D compare out/compare/contacts.csv and out/compare/contacts.png"
+	@echo "                out/compare/trajectories.csv and out/compare/trajectories.png"
 
 test: deps-test
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DMINK_BUILD_TESTS=ON $(CMAKE_FLAGS)

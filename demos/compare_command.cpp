@@ -9,12 +9,12 @@
 #include "commands.hpp"
 #include "contact_compare.hpp"
 #include "exit_codes.hpp"
+#include "line_plot.hpp"
 #include "mink/engine/scene_file.hpp"
 #include "mink/error.hpp"
-#include "mink/render/gl_context.hpp"
-#include "mink/render/png_file.hpp"
-#include "mink/render/renderer.hpp"
+#include "mink/render/gl_backend.hpp"
 #include "output_files.hpp"
+#include "trajectory_compare.hpp"
 
 namespace mink::cli {
 
@@ -26,50 +26,24 @@ struct CompareOptions {
   std::string out = "out/compare";
   int every = 10;
   std::string gl = "osmesa";
+  bool trajectories = false;  // also without joints
+  int box2d_substeps = 0;     // 0: the scene's WorldDef::substeps
+  int velocity_iterations = Box2dStepping{}.velocity;
+  int position_iterations = Box2dStepping{}.position;
 };
 
 constexpr double kBand = 1e-6;
 
-// Contact counts over time, drawn by the render layer: the camera maps one world unit to one
-// pixel (y up), so series are plotted in pixel units inside the plot box.
-void plot_counts(const ContactComparison& c, const std::string& scene, GlBackend backend,
-                 const std::filesystem::path& file) {
-  const int width = 1000;
-  const int height = 520;
-  const auto context = make_offscreen_context(backend, width, height);
-  RendererOptions options;
-  options.samples = 4;
-  Renderer r(*context, options);
-  r.camera().fit(Vec2(0, 0), Vec2(width, height), 0);
-  r.begin_frame(Color{1, 1, 1, 1});
-  const Real left = 70, right = width - 20, bottom = 50, top = height - 60;
-  std::size_t max_count = 1;
-  for (const ContactCountRow& row : c.rows) {
-    max_count = std::max(
-        {max_count, row.mink_pairs, row.mink_contacts, row.box2d_pairs, row.box2d_touching});
-  }
-  // Headroom, and a round top: a flat line at the maximum stays visible, ticks stay whole.
-  max_count = (max_count + max_count / 8 + 3) / 4 * 4;
-  const double steps = static_cast<double>(c.rows.size());
-  auto at = [&](double step, double count) {
-    return Vec2(left + (right - left) * step / steps,
-                bottom + (top - bottom) * count / static_cast<double>(max_count));
-  };
-  const Color axis{0.2f, 0.2f, 0.2f, 1};
-  const Color grid{0.85f, 0.85f, 0.85f, 1};
-  for (int k = 0; k <= 4; ++k) {
-    const double count = max_count * k / 4.0;
-    r.draw_segment(at(0, count), at(steps, count), grid);
-    char label[32];
-    std::snprintf(label, sizeof label, "%.0f", count);
-    const Vec2 pixel = r.camera().world_to_pixel(at(0, count));
-    r.draw_screen_text(Vec2(8, pixel.y() - 6), label, axis);
-    std::snprintf(label, sizeof label, "%.0f", steps * k / 4.0);
-    const Vec2 tick = r.camera().world_to_pixel(at(steps * k / 4.0, 0));
-    r.draw_screen_text(Vec2(tick.x() - 12, tick.y() + 8), label, axis);
-  }
-  r.draw_segment(at(0, 0), at(steps, 0), axis);
-  r.draw_segment(at(0, 0), at(0, max_count), axis);
+// A built-in's name, or a scene file's name without its folders: plot titles stay short.
+std::string plot_name(const std::string& scene) {
+  return std::filesystem::path(scene).filename().string();
+}
+
+// Contact counts over time.
+PlotPanel count_panel(const ContactComparison& c, const std::string& scene) {
+  PlotPanel panel;
+  panel.title = "contacts over time: " + scene + ", Minkowski vs Box2D 2.4.1 (x: step)";
+  panel.whole_numbers = true;
   struct Series {
     std::size_t ContactCountRow::*field;
     Color color;
@@ -82,29 +56,117 @@ void plot_counts(const ContactComparison& c, const std::string& scene, GlBackend
       {&ContactCountRow::mink_contacts, {0.1f, 0.3f, 0.85f, 1}, "mink touching", false},
       {&ContactCountRow::box2d_touching, {0.85f, 0.2f, 0.1f, 1}, "box2d touching", true},
   };
-  int legend = 0;
   for (const Series& s : series) {
-    const std::size_t dash = std::max<std::size_t>(1, c.rows.size() / 60);
-    for (std::size_t i = 1; i < c.rows.size(); ++i) {
-      if (s.dashed && (i / dash) % 2 == 1) continue;
-      r.draw_segment(at(static_cast<double>(i), static_cast<double>(c.rows[i - 1].*s.field)),
-                     at(static_cast<double>(i + 1), static_cast<double>(c.rows[i].*s.field)),
-                     s.color);
-    }
-    const Vec2 key(left + 20 + 220 * legend++, 36);
-    r.draw_screen_rect(key, key + Vec2(24, 6), s.color);
-    r.draw_screen_text(key + Vec2(30, -4), s.name, axis);
+    PlotLine line{s.name, s.color, s.dashed, {}};
+    for (const ContactCountRow& row : c.rows)
+      line.values.push_back(static_cast<double>(row.*s.field));
+    panel.lines.push_back(std::move(line));
   }
-  r.draw_screen_text(Vec2(left, 10),
-                     "contacts over time: " + scene + ", Minkowski vs Box2D 2.4.1 (x: step)", axis);
-  r.end_frame();
-  write_png(file, r.read_pixels(3));
+  return panel;
+}
+
+// Position differences over time and, with pinning joints, both engines' joint gaps.
+std::vector<PlotPanel> trajectory_panels(const TrajectoryRecorder& t, const std::string& scene) {
+  std::vector<PlotPanel> panels(1);
+  panels[0].title = "position difference (m): " + scene + ", Minkowski vs Box2D 2.4.1 (x: step)";
+  panels[0].first_step = 0;
+  PlotLine max{"max over bodies", {0.85f, 0.2f, 0.1f, 1}, false, {}};
+  PlotLine mean{"mean over bodies", {0.1f, 0.3f, 0.85f, 1}, false, {}};
+  for (const StepDifference& d : step_differences(t.rows())) {
+    max.values.push_back(d.max);
+    mean.values.push_back(d.mean);
+  }
+  panels[0].lines = {std::move(max), std::move(mean)};
+  if (!t.gaps().empty()) {
+    PlotPanel gaps;
+    gaps.title = "joint gap (m, revolute and weld joints summed): " + scene + " (x: step)";
+    gaps.first_step = 0;
+    PlotLine mink{"Minkowski", {0.1f, 0.3f, 0.85f, 1}, false, {}};
+    PlotLine box2d{"Box2D 2.4.1", {0.85f, 0.2f, 0.1f, 1}, false, {}};
+    for (const JointGapRow& g : t.gaps()) {
+      mink.values.push_back(g.mink);
+      box2d.values.push_back(g.box2d);
+    }
+    gaps.lines = {std::move(mink), std::move(box2d)};
+    panels.push_back(std::move(gaps));
+  }
+  return panels;
+}
+
+// Writes trajectories.csv (and joint_gaps.csv) and the plot; prints the summary.
+void report_trajectories(const TrajectoryRecorder& t, const CompareOptions& options,
+                         const SceneDef& scene, GlBackend backend, std::ostream& out) {
+  const std::filesystem::path dir(options.out);
+  {
+    std::ofstream csv = open_output_file(dir / "trajectories.csv", "the trajectories");
+    csv << "step,body,mink_x,mink_y,box2d_x,box2d_y,distance\n";
+    char line[256];
+    for (const TrajectoryRow& row : t.rows()) {
+      std::snprintf(line, sizeof line, "%lld,%zu,%.9g,%.9g,%.9g,%.9g,%.9g\n", row.step, row.body,
+                    row.mink.x(), row.mink.y(), row.box2d.x(), row.box2d.y(), row.distance);
+      csv << line;
+    }
+    close_output_file(csv, dir / "trajectories.csv", "the trajectories");
+  }
+  if (!t.gaps().empty()) {
+    std::ofstream csv = open_output_file(dir / "joint_gaps.csv", "the joint gaps");
+    csv << "step,mink,box2d\n";
+    char line[128];
+    for (const JointGapRow& g : t.gaps()) {
+      std::snprintf(line, sizeof line, "%lld,%.9g,%.9g\n", g.step, g.mink, g.box2d);
+      csv << line;
+    }
+    close_output_file(csv, dir / "joint_gaps.csv", "the joint gaps");
+  }
+  write_line_plot(trajectory_panels(t, plot_name(options.scene)), backend,
+                  dir / "trajectories.png");
+
+  const double dt = scene.world.time_step;
+  const long long second = std::max(1LL, std::llround(1.0 / dt));
+  const WorstDifference first = worst_difference(t.rows(), second);
+  const WorstDifference all = worst_difference(t.rows(), options.steps);
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "trajectories of %zu dynamic bodies: worst position difference %.3g m over the "
+                "first second (body %zu, step %lld), %.3g m over the whole run (body %zu, step "
+                "%lld)\n",
+                t.body_count(), first.distance, first.body, first.step, all.distance, all.body,
+                all.step);
+  out << line;
+  if (!t.gaps().empty()) {
+    double mink = 0, box2d = 0;
+    for (const JointGapRow& g : t.gaps()) {
+      mink = std::max(mink, g.mink);
+      box2d = std::max(box2d, g.box2d);
+    }
+    std::snprintf(line, sizeof line,
+                  "joint gap (revolute and weld joints summed): Minkowski %.3g m at most, %.3g m "
+                  "at the end (%.4g s); Box2D 2.4.1 %.3g m at most, %.3g m at the end\n",
+                  mink, t.gaps().back().mink, static_cast<double>(options.steps) * dt, box2d,
+                  t.gaps().back().box2d);
+    out << line;
+  }
+  out << "wrote " << (dir / "trajectories.csv").string()
+      << (t.gaps().empty() ? "" : ", " + (dir / "joint_gaps.csv").string()) << " and "
+      << (dir / "trajectories.png").string() << '\n';
 }
 
 int run_compare(const CompareOptions& options, Streams streams) {
   const GlBackend backend = parse_gl_backend(options.gl);
   const SceneDef scene = resolve_scene(options.scene);
-  const ContactComparison c = compare_contacts(scene, options.steps, options.every, kBand);
+  const bool trajectories = options.trajectories || !scene.joints.empty();
+  TrajectoryRecorder recorder(scene);
+  CompareObserver observe;
+  if (trajectories) {
+    observe = [&recorder](long long step, const World& ours, const interop::Box2dScene& rival) {
+      recorder.record(step, ours, rival);
+    };
+  }
+  const Box2dStepping stepping{
+      options.box2d_substeps > 0 ? options.box2d_substeps : scene.world.substeps,
+      options.velocity_iterations, options.position_iterations};
+  const ContactComparison c =
+      compare_contacts(scene, options.steps, options.every, kBand, stepping, observe);
   const std::filesystem::path out(options.out);
   make_directories(out, "--out");
   {
@@ -116,7 +178,7 @@ int run_compare(const CompareOptions& options, Streams streams) {
     }
     close_output_file(csv, out / "contacts.csv", "the contact counts");
   }
-  plot_counts(c, options.scene, backend, out / "contacts.png");
+  write_line_plot({count_panel(c, plot_name(options.scene))}, backend, out / "contacts.png");
 
   // Averages over the last tenth of the run: where the scene has settled.
   const std::size_t tail = std::max<std::size_t>(1, c.rows.size() / 10);
@@ -127,6 +189,12 @@ int run_compare(const CompareOptions& options, Streams streams) {
     box2d += static_cast<double>(c.rows[i].box2d_touching);
   }
   char line[320];
+  std::snprintf(line, sizeof line,
+                "Box2D 2.4.1 per step: %d b2World::Step of %.4g s, %d velocity and %d position "
+                "iterations each\n",
+                stepping.substeps, scene.world.time_step / stepping.substeps, stepping.velocity,
+                stepping.position);
+  streams.out << line;
   std::snprintf(line, sizeof line,
                 "%s, %lld steps: touching contacts over the last %zu steps average %.1f "
                 "(Minkowski) and %.1f (Box2D)\n",
@@ -160,6 +228,7 @@ int run_compare(const CompareOptions& options, Streams streams) {
   streams.out << line;
   streams.out << "wrote " << (out / "contacts.csv").string() << " and "
               << (out / "contacts.png").string() << '\n';
+  if (trajectories) report_trajectories(recorder, options, scene, backend, streams.out);
   return c.outside_band == 0 ? kSuccess : kInternalError;
 }
 
@@ -170,7 +239,11 @@ Action add_compare_command(CLI::App& app, Streams streams) {
   CLI::App* command = app.add_subcommand(
       "compare",
       "Simulate a scene in Minkowski and Box2D 2.4.1: contact counts (CSV and PNG plot) and the "
-      "overlap oracle (exit 1 when a verdict differs outside a 1e-6 band).");
+      "overlap oracle (exit 1 when a verdict differs outside a 1e-6 band). A scene with joints "
+      "(or --trajectories) also gets every dynamic body's position in both engines per step "
+      "(trajectories.csv: step,body,mink_x,mink_y,box2d_x,box2d_y,distance), the summed gap of "
+      "its revolute and weld joints (joint_gaps.csv: step,mink,box2d), a plot of both "
+      "(trajectories.png) and the worst difference over the first second and the whole run.");
   add_scene_argument(*command, options->scene);
   command->add_option("--steps", options->steps, "steps to run (default 600)")
       ->check(CLI::Range(1LL, 10'000'000LL));
@@ -178,6 +251,22 @@ Action add_compare_command(CLI::App& app, Streams streams) {
   command->add_option("--every", options->every, "oracle every K steps (default 10)")
       ->check(CLI::Range(1, 1'000'000));
   command->add_option("--gl", options->gl, "headless GL backend for the plot: osmesa or egl");
+  command->add_flag("--trajectories", options->trajectories,
+                    "compare trajectories for a scene without joints too");
+  command
+      ->add_option("--box2d-substeps", options->box2d_substeps,
+                   "b2World::Step calls per step, each of a substep's time (default: the scene's "
+                   "substeps, so both engines integrate at the same rate; 1 is how Box2D 2.4.1 "
+                   "is usually run)")
+      ->check(CLI::Range(1, 1000));
+  command
+      ->add_option("--velocity-iterations", options->velocity_iterations,
+                   "Box2D 2.4.1 velocity iterations per b2World::Step (default 8)")
+      ->check(CLI::Range(1, 1000));
+  command
+      ->add_option("--position-iterations", options->position_iterations,
+                   "Box2D 2.4.1 position iterations per b2World::Step (default 3)")
+      ->check(CLI::Range(0, 1000));
   return [options, streams] { return run_compare(*options, streams); };
 }
 

@@ -3,6 +3,7 @@
 #include <box2d/box2d.h>
 
 #include <algorithm>
+#include <string>
 
 #include "box2d_distance.hpp"
 #include "box2d_scene.hpp"
@@ -78,25 +79,40 @@ void run_oracle(const World& world, const std::vector<OracleShape>& shapes, long
 
 }  // namespace
 
-ContactComparison compare_contacts(const SceneDef& scene, long long steps, int every, double band) {
+ContactComparison compare_contacts(const SceneDef& scene, long long steps, int every, double band,
+                                   const Box2dStepping& stepping, const CompareObserver& observe) {
   if (steps < 1) throw InvalidArgumentError("steps must be at least 1");
   if (every < 1) throw InvalidArgumentError("--every must be at least 1");
-  interop::Box2dScene rival = interop::build_box2d_world(scene);  // refuses big hulls first
+  if (stepping.substeps < 1 || stepping.velocity < 1 || stepping.position < 0) {
+    throw InvalidArgumentError(
+        "Box2D stepping: substeps and velocity iterations must be at least 1 and position "
+        "iterations at least 0, got " +
+        std::to_string(stepping.substeps) + ", " + std::to_string(stepping.velocity) + " and " +
+        std::to_string(stepping.position));
+  }
+  // Refuses what Box2D cannot hold before anything runs.
+  interop::Box2dScene rival = interop::build_box2d_world(scene);
   World world = build_world(scene);
   // Prepared once: hulls never change, only poses.
   std::vector<OracleShape> shapes;
   const std::vector<BodyId> bodies = world.bodies();
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     for (ShapeId shape : world.body_shapes(bodies[i])) {
+      // The oracle checks the paper's GJK on hulls; other kinds' cores are points and segments.
+      if (world.shape_type(shape) != ShapeType::polygon) continue;
       shapes.push_back({i, bodies[i], shape, PreparedHull(world.shape_hull(shape)),
                         world.body_type(bodies[i]) == BodyType::dynamic});
     }
   }
   ContactComparison result;
-  const float dt = static_cast<float>(scene.world.time_step);
+  const float dt = static_cast<float>(scene.world.time_step / stepping.substeps);
+  if (observe) observe(0, world, rival);
   for (long long step = 1; step <= steps; ++step) {
     world.step();
-    rival.world->Step(dt, 8, 3);
+    for (int k = 0; k < stepping.substeps; ++k) {
+      rival.world->Step(dt, stepping.velocity, stepping.position);
+    }
+    if (observe) observe(step, world, rival);
     ContactCountRow row;
     row.step = step;
     row.mink_pairs = world.counters().broadphase_pairs;
