@@ -1,13 +1,279 @@
 #!/usr/bin/env bash
-# Runs the step benchmark (ours against Box2D 2.4.1 in the same run) and writes
-# bench/results/step.csv.
+# Runs the step benchmarks, each against its rival in the same run, into bench/results/:
 #
-# Usage: bench/run_step.sh BUILD_DIR [Google Benchmark flags...]
+# 1. Ours against Box2D 2.4.1 (Google Benchmark, bench/engine/step_bench.cpp): step.csv.
+# 2. The race against Box2D v3 on its own benchmark suite: its ten scenes (compounds,
+#    joint_grid, junkyard, large_pyramid, many_pyramids, rain, smash, spinner, tumbler,
+#    washer), each stepped as Box2D v3's benchmark app steps it (1/60 s, 4 substeps, continuous
+#    on, as many steps as the app takes), at 1 and 2 workers, against our built-in of the same
+#    name twice: at Box2D v3's settings (mink_matched: 4 substeps, 30 Hz contacts of damping
+#    ratio 10, 3 m/s push-out, joints at 60 Hz and damping ratio 2) and at our own solver
+#    defaults (mink_defaults). Sleeping is as in Box2D v3's app in every run: off where the
+#    scene turns it off (joint_grid, large_pyramid, many_pyramids), on elsewhere. A scene we
+#    have no built-in for is skipped on our side, with a message.
+#    Every run is a process of its own (bench/engine/step_race.hpp). The three runs of a scene
+#    and worker count are interleaved: they take turns every 20 steps, one running while the
+#    others are stopped (bench/engine/take_turns.cpp), so a busy moment of a shared machine
+#    falls on all three alike; rounds repeat the whole suite. Step times are wall times; the
+#    first step of a run is not timed, as in Box2D v3's app, nor the first of each turn. It
+#    writes
+#      step_v3.csv          case,size,implementation,median_ns: the median wall time of a step
+#                           over the timed steps of all rounds (size: workers; implementation:
+#                           box2d_v3, mink_matched or mink_defaults)
+#      step_v3_ratios.csv   ours / Box2D v3 per scene, one column per setting and worker count
+#      step_v3.png          those ratios as bars (gnuplot, bench/plot_step_v3.gp)
+#      step_v3_memory.csv   case,implementation,peak_kib: the peak resident memory of the
+#                           scene's process at the first worker count, the most of its rounds
+#      step_v3_counts.csv   case,implementation,bodies,shapes,joints,contacts at the end of the
+#                           first round's run at the first worker count (Box2D v3's from
+#                           b2World_GetCounters; contacts: contact records, touching or not);
+#                           a scene whose counts differ from Box2D v3's is named on stderr
+#    Box2D v3 is built from ../shared/rivals/box2d-v3 beside the repository, or from the source
+#    tree named by the CMake cache variable MINK_BOX2D_V3_DIR; without it this part prints why
+#    and is skipped. The target mink_bench_step_v3 builds its programs.
+#
+# Usage: bench/run_step.sh BUILD_DIR [Google Benchmark flags for part 1...]
 # Environment:
-#   MINK_BENCH_STEP_REPETITIONS=N   fresh worlds per case and engine (default 3)
+#   MINK_BENCH_STEP_RIVALS="box2d-2.4.1 box2d-v3"   which parts to run (default both)
+#   MINK_BENCH_STEP_REPETITIONS=N     part 1: fresh worlds per case and engine (default 3)
+#   MINK_BENCH_STEP_V3_ROUNDS=N       part 2: rounds over the suite (default 1)
+#   MINK_BENCH_STEP_V3_STEPS=N        part 2: N steps per run in every scene instead of the
+#                                     app's counts, or NAME=N,NAME=N for the named scenes only
+#   MINK_BENCH_STEP_V3_SCENES="a b"   part 2: only these scenes (default: all ten)
+#   MINK_BENCH_STEP_V3_WORKERS="1 2"  part 2: worker counts (default 1 and 2)
+#   MINK_BENCH_STEP_V3_IMPLEMENTATIONS="box2d_v3 mink_matched"   part 2: only these
+#   MINK_BENCH_STEP_V3_TURN=N         part 2: steps per turn (default 20)
+#   MINK_BENCH_STEP_V3_SLEEP=off      part 2: sleeping off in every scene of both engines
+#                                     (default app: as Box2D v3's app has it)
+# A quick run: MINK_BENCH_STEP_RIVALS=box2d-v3 MINK_BENCH_STEP_V3_STEPS=60 bench/run_step.sh build
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 bench_init step "$@"
+rivals=${MINK_BENCH_STEP_RIVALS:-box2d-2.4.1 box2d-v3}
+
+if [[ " $rivals " == *" box2d-2.4.1 "* ]]; then
+  started=$SECONDS
+  "$binary" --csv="$csv" --repetitions="${MINK_BENCH_STEP_REPETITIONS:-3}" "${bench_args[@]}"
+  echo "Step benchmark against Box2D 2.4.1 took $((SECONDS - started)) s; wrote $csv"
+fi
+if [[ " $rivals " != *" box2d-v3 "* ]]; then exit 0; fi
+
+mink_runner=$build_dir/bin/mink_bench_step_v3_mink
+v3_runner=$build_dir/bin/mink_bench_step_v3_box2d
+for program in mink_bench_step_v3_mink mink_bench_take_turns; do
+  if [ ! -x "$build_dir/bin/$program" ]; then
+    echo "run_step.sh: $build_dir/bin/$program not found; build the target mink_bench_step_v3" \
+      "first" >&2
+    exit 1
+  fi
+done
+if [ ! -x "$v3_runner" ]; then
+  v3_dir=$(sed -n 's/^MINK_BOX2D_V3_DIR:PATH=//p' "$build_dir/CMakeCache.txt" 2>/dev/null || true)
+  echo "run_step.sh: the race against Box2D v3 is skipped: $v3_runner was not built" \
+    "(Box2D v3's source tree, MINK_BOX2D_V3_DIR=${v3_dir:-unset}, is missing, or the target" \
+    "mink_bench_step_v3 was not built)"
+  exit 0
+fi
+
+turns_binary=$build_dir/bin/mink_bench_take_turns
+rounds=${MINK_BENCH_STEP_V3_ROUNDS:-1}
+turn=${MINK_BENCH_STEP_V3_TURN:-20}
+workers_list=${MINK_BENCH_STEP_V3_WORKERS:-1 2}
+sleep_mode=${MINK_BENCH_STEP_V3_SLEEP:-app}
+steps_override=${MINK_BENCH_STEP_V3_STEPS:-}
+implementations=${MINK_BENCH_STEP_V3_IMPLEMENTATIONS:-box2d_v3 mink_matched mink_defaults}
+all_scenes=$("$v3_runner" --list | awk '{ printf "%s ", $1 }')
+scenes=${MINK_BENCH_STEP_V3_SCENES:-$all_scenes}
+for scene in $scenes; do
+  if [[ " $all_scenes " != *" $scene "* ]]; then
+    echo "run_step.sh: MINK_BENCH_STEP_V3_SCENES: $scene is not one of: $all_scenes" >&2
+    exit 2
+  fi
+done
+for implementation in $implementations; do
+  case $implementation in
+    box2d_v3 | mink_matched | mink_defaults) ;;
+    *)
+      echo "run_step.sh: MINK_BENCH_STEP_V3_IMPLEMENTATIONS: $implementation is not one of" \
+        "box2d_v3 mink_matched mink_defaults" >&2
+      exit 2
+      ;;
+  esac
+done
+if [ -n "$steps_override" ] && ! [[ $steps_override =~ ^[1-9][0-9]*$ ]]; then
+  for entry in ${steps_override//,/ }; do
+    if [[ " $all_scenes " != *" ${entry%%=*} "* ]] || ! [[ $entry =~ =[1-9][0-9]*$ ]]; then
+      echo "run_step.sh: MINK_BENCH_STEP_V3_STEPS: $entry: expected N, or NAME=N with NAME one" \
+        "of: $all_scenes" >&2
+      exit 2
+    fi
+  done
+fi
+for setting in "MINK_BENCH_STEP_V3_ROUNDS=$rounds" "MINK_BENCH_STEP_V3_TURN=$turn"; do
+  if ! [[ ${setting#*=} =~ ^[1-9][0-9]*$ ]]; then
+    echo "run_step.sh: $setting: expected a positive whole number" >&2
+    exit 2
+  fi
+done
+
+# The --steps argument for a scene, from MINK_BENCH_STEP_V3_STEPS (none: the app's count).
+steps_arg() {
+  local scene=$1 entry
+  if [ -z "$steps_override" ]; then return; fi
+  if [[ $steps_override =~ ^[0-9]+$ ]]; then
+    echo "--steps=$steps_override"
+    return
+  fi
+  for entry in ${steps_override//,/ }; do
+    if [ "${entry%%=*}" = "$scene" ]; then echo "--steps=${entry#*=}"; fi
+  done
+}
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+first_workers=${workers_list%% *}
+failed=""
 started=$SECONDS
-"$binary" --csv="$csv" --repetitions="${MINK_BENCH_STEP_REPETITIONS:-3}" "${bench_args[@]}"
-echo "Step benchmark took $((SECONDS - started)) s; wrote $csv"
+echo "Race against Box2D v3: $rounds round(s), workers: $workers_list, turns of $turn steps," \
+  "sleeping: $sleep_mode"
+for round in $(seq "$rounds"); do
+  for scene in $scenes; do
+    for workers in $workers_list; do
+      # The implementations of one scene and worker count take turns every $turn steps.
+      commands=()
+      for implementation in $implementations; do
+        runner=$mink_runner
+        if [ "$implementation" = box2d_v3 ]; then runner=$v3_runner; fi
+        if [ ${#commands[@]} -gt 0 ]; then commands+=(--and); fi
+        # Unquoted: steps_arg prints one word or none.
+        commands+=("$runner" "$scene" --workers="$workers" --implementation="$implementation"
+          --sleep="$sleep_mode" --turns="$turn" --samples="$work/$scene.$workers.$implementation"
+          $(steps_arg "$scene"))
+      done
+      status=0
+      "$turns_binary" "${commands[@]}" >"$work/output" || status=$?
+      while IFS= read -r line; do
+        case $line in
+          race\ *)
+            echo "round=$round $line" >>"$work/runs"
+            echo "$line" | awk -v round="$round" '{
+              for (i = 1; i <= NF; ++i) { split($i, kv, "="); f[kv[1]] = kv[2] }
+              printf "round %s  %-13s %d worker(s)  %-13s %9.3f ms/step  peak %7.1f MiB\n",
+                     round, f["scene"], f["workers"], f["implementation"], f["median_ns"] / 1e6,
+                     f["peak_kib"] / 1024 }'
+            ;;
+          *) if [ "$round" = 1 ] && [ "$workers" = "$first_workers" ]; then echo "$line"; fi ;;
+        esac
+      done <"$work/output"
+      if [ "$status" -ne 0 ]; then failed+=" $scene/$workers"; fi
+    done
+  done
+done
+echo "Race against Box2D v3 took $((SECONDS - started)) s"
+
+# Medians over the pooled timed steps of every round.
+v3_csv=$results_dir/step_v3.csv
+echo "case,size,implementation,median_ns" >"$v3_csv"
+for scene in $scenes; do
+  for workers in $workers_list; do
+    for implementation in $implementations; do
+      samples=$work/$scene.$workers.$implementation
+      if [ ! -s "$samples" ]; then continue; fi
+      sort -n "$samples" | awk -v row="$scene,$workers,$implementation" '
+        { v[NR] = $1 }
+        END { printf "%s,%.0f\n", row, NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+    done
+  done
+done >>"$v3_csv"
+
+memory_csv=$results_dir/step_v3_memory.csv
+counts_csv=$results_dir/step_v3_counts.csv
+awk -v first_workers="$first_workers" -v scenes="$scenes" \
+    -v implementations="$implementations" -v memory="$memory_csv" -v counts="$counts_csv" '
+  {
+    for (i = 1; i <= NF; ++i) { split($i, kv, "="); f[kv[1]] = kv[2] }
+    if (f["workers"] != first_workers) next
+    key = f["scene"] "," f["implementation"]
+    if (!(key in peak) || f["peak_kib"] + 0 > peak[key]) peak[key] = f["peak_kib"] + 0
+    if (f["round"] == 1) {
+      count[key] = f["bodies"] "," f["shapes"] "," f["joints"] "," f["contacts"]
+    }
+  }
+  END {
+    ns = split(scenes, s, " ")
+    ni = split(implementations, m, " ")
+    print "case,implementation,peak_kib" >memory
+    print "case,implementation,bodies,shapes,joints,contacts" >counts
+    for (i = 1; i <= ns; ++i) {
+      for (j = 1; j <= ni; ++j) {
+        key = s[i] "," m[j]
+        if (key in peak) print key "," peak[key] >memory
+        if (key in count) print key "," count[key] >counts
+      }
+    }
+  }' "$work/runs"
+
+# Ours / Box2D v3, one column per setting and worker count. Empty where a side did not run or
+# where the two are not the same scene: their shape or joint counts differ (said on stderr; the
+# bodies may differ, as a static ground is one body or several).
+ratios_csv=$results_dir/step_v3_ratios.csv
+awk -F, -v workers_list="$workers_list" -v scenes="$scenes" '
+  FNR == 1 { ++file; next }
+  file == 1 { content[$1 "," $2] = $4 "," $5; next }
+  { t[$1 "," $2 "," $3] = $4 }
+  END {
+    nw = split(workers_list, w, " ")
+    ns = split(scenes, s, " ")
+    no = split("mink_matched mink_defaults", ours, " ")
+    header = "case"
+    for (j = 1; j <= nw; ++j) {
+      for (k = 1; k <= no; ++k) header = header "," ours[k] "_" w[j] "w"
+    }
+    print header
+    for (i = 1; i <= ns; ++i) {
+      row = s[i]
+      theirs = content[s[i] ",box2d_v3"]
+      for (j = 1; j <= nw; ++j) {
+        v3 = t[s[i] "," w[j] ",box2d_v3"]
+        for (k = 1; k <= no; ++k) {
+          mine = t[s[i] "," w[j] "," ours[k]]
+          same = content[s[i] "," ours[k]] == theirs
+          if (mine != "" && v3 != "" && !same && !((s[i] "," ours[k]) in said)) {
+            said[s[i] "," ours[k]] = 1
+            printf "run_step.sh: %s: no ratio for %s: its shapes,joints %s are not Box2D v3%cs %s" \
+                   " (not the same scene)\n", s[i], ours[k], content[s[i] "," ours[k]], 39, theirs \
+                   >"/dev/stderr"
+          }
+          row = row "," (v3 != "" && mine != "" && same ? sprintf("%.3f", mine / v3) : "")
+        }
+      }
+      print row
+    }
+  }' "$counts_csv" "$v3_csv" >"$ratios_csv"
+
+echo
+echo "Ours / Box2D v3 (median step time; below 1: ours is faster), $ratios_csv:"
+column -s, -t "$ratios_csv"
+echo
+echo "Peak memory (KiB, $first_workers worker(s)), $memory_csv:"
+column -s, -t "$memory_csv"
+echo
+echo "Counts at the end of a run, $counts_csv:"
+column -s, -t "$counts_csv"
+
+png=$results_dir/step_v3.png
+if ! awk -F, 'NR > 1 { for (i = 2; i <= NF; ++i) if ($i != "") found = 1 } END { exit !found }' \
+  "$ratios_csv"; then
+  echo "run_step.sh: no ratios to plot; $png not drawn"
+elif command -v gnuplot >/dev/null; then
+  terminal=png
+  if gnuplot -e 'set terminal pngcairo' >/dev/null 2>&1; then terminal=pngcairo; fi
+  gnuplot -e "csv='$ratios_csv'; png='$png'; terminal='$terminal'" "$bench_dir/plot_step_v3.gp"
+  echo "Wrote $v3_csv, $png"
+else
+  echo "run_step.sh: gnuplot not found (apt install gnuplot-nox); $png not drawn" >&2
+fi
+if [ -n "$failed" ]; then
+  echo "run_step.sh: these runs failed (their output is above):$failed" >&2
+  exit 1
+fi

@@ -1,0 +1,178 @@
+#include "step_race.hpp"
+
+#include <sys/resource.h>
+
+#include <csignal>
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <ctime>
+#include <exception>
+#include <string>
+
+namespace mink::bench {
+namespace {
+
+constexpr int kUsage = 2;
+
+struct Options {
+  const SuiteScene* scene = nullptr;
+  int workers = 1;
+  int steps = 0;  // 0: the suite's count
+  int warmup = 1;
+  int turns = 0;  // 0: no turns
+  std::string samples;
+  std::string_view implementation;
+  bool sleep_off = false;  // in every scene
+};
+
+// Wall time, not thread CPU time: with more than one worker the step's work is spread over
+// threads, and waiting for the slowest of them is part of the step.
+long long wall_ns() {
+  timespec t{};
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return static_cast<long long>(t.tv_sec) * 1000000000LL + t.tv_nsec;
+}
+
+long peak_kib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss;  // KiB on Linux
+}
+
+// The value of `--name=VALUE` as a whole number of at least `least`, or false after naming the
+// bad argument.
+bool parse_count(std::string_view arg, std::string_view name, int least, int& out) {
+  const std::string_view value = arg.substr(name.size());
+  int parsed = 0;
+  const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), parsed);
+  if (error != std::errc() || end != value.data() + value.size() || parsed < least) {
+    std::fprintf(stderr, "%.*s: expected a whole number of at least %d\n",
+                 static_cast<int>(arg.size()), arg.data(), least);
+    return false;
+  }
+  out = parsed;
+  return true;
+}
+
+bool parse(int argc, char** argv, const RaceEngine& engine, Options& options) {
+  options.implementation = engine.implementations.front();
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg.starts_with("--workers=")) {
+      if (!parse_count(arg, "--workers=", 1, options.workers)) return false;
+    } else if (arg.starts_with("--steps=")) {
+      if (!parse_count(arg, "--steps=", 1, options.steps)) return false;
+    } else if (arg.starts_with("--warmup=")) {
+      if (!parse_count(arg, "--warmup=", 0, options.warmup)) return false;
+    } else if (arg.starts_with("--turns=")) {
+      if (!parse_count(arg, "--turns=", 1, options.turns)) return false;
+    } else if (arg.starts_with("--samples=")) {
+      options.samples = std::string(arg.substr(10));
+    } else if (arg.starts_with("--implementation=")) {
+      const std::string_view name = arg.substr(17);
+      const auto& names = engine.implementations;
+      if (std::find(names.begin(), names.end(), name) == names.end()) {
+        std::fprintf(stderr, "%s: unknown implementation\n", argv[i]);
+        return false;
+      }
+      options.implementation = name;
+    } else if (arg == "--sleep=app" || arg == "--sleep=off") {
+      options.sleep_off = arg == "--sleep=off";
+    } else if (!arg.starts_with("-") && options.scene == nullptr) {
+      options.scene = find_suite_scene(arg);
+      if (options.scene == nullptr) {
+        std::fprintf(stderr, "%s: not a scene of Box2D v3's benchmark suite\n", argv[i]);
+        return false;
+      }
+    } else {
+      std::fprintf(stderr, "%s: unknown argument\n", argv[i]);
+      return false;
+    }
+  }
+  if (options.scene == nullptr) {
+    std::fprintf(stderr,
+                 "usage: %s SCENE [--workers=N] [--steps=N] [--warmup=K] "
+                 "[--samples=FILE] [--implementation=NAME] [--sleep=app|off]\n",
+                 argv[0]);
+    return false;
+  }
+  if (options.steps == 0) options.steps = options.scene->steps;
+  if (options.warmup >= options.steps) {
+    std::fprintf(stderr, "--warmup=%d: leaves none of the %d steps to time\n", options.warmup,
+                 options.steps);
+    return false;
+  }
+  return true;
+}
+
+long long median(std::vector<long long> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+int run(const Options& options, const RaceEngine& engine) {
+  const long base = peak_kib();
+  const RaceRequest request{options.scene, options.workers, options.implementation,
+                            !options.sleep_off && !options.scene->sleep_off};
+  const std::unique_ptr<RaceWorld> world = engine.build(request);
+  if (!world) {
+    std::printf("%.*s: no scene %.*s; skipped\n", static_cast<int>(options.implementation.size()),
+                options.implementation.data(), static_cast<int>(options.scene->name.size()),
+                options.scene->name.data());
+    return 0;
+  }
+  std::vector<long long> times;
+  times.reserve(static_cast<std::size_t>(options.steps));
+  for (int i = 0; i < options.steps; ++i) {
+    const bool turn_starts = options.turns > 0 && i % options.turns == 0;
+    if (turn_starts) std::raise(SIGSTOP);
+    const long long start = wall_ns();
+    world->step(i);
+    if (i >= options.warmup && !turn_starts) times.push_back(wall_ns() - start);
+  }
+  const RaceCounts counts = world->counts();
+  const long peak = peak_kib();
+
+  if (!options.samples.empty()) {
+    FILE* out = std::fopen(options.samples.c_str(), "a");
+    if (out == nullptr) {
+      std::fprintf(stderr, "--samples=%s: cannot append to it\n", options.samples.c_str());
+      return 1;
+    }
+    for (const long long ns : times) std::fprintf(out, "%lld\n", ns);
+    std::fclose(out);
+  }
+  std::printf(
+      "race scene=%.*s workers=%d implementation=%.*s steps=%d timed=%zu median_ns=%lld "
+      "peak_kib=%ld base_kib=%ld bodies=%lld shapes=%lld joints=%lld contacts=%lld\n",
+      static_cast<int>(options.scene->name.size()), options.scene->name.data(), options.workers,
+      static_cast<int>(options.implementation.size()), options.implementation.data(), options.steps,
+      times.size(), median(times), peak, base, counts.bodies, counts.shapes, counts.joints,
+      counts.contacts);
+  return 0;
+}
+
+}  // namespace
+
+int race_main(int argc, char** argv, const RaceEngine& engine) {
+  if (argc == 2 && std::string_view(argv[1]) == "--list") {
+    for (const SuiteScene& scene : kSuite) {
+      std::printf("%.*s %d\n", static_cast<int>(scene.name.size()), scene.name.data(), scene.steps);
+    }
+    return 0;
+  }
+  Options options;
+  if (!parse(argc, argv, engine, options)) return kUsage;
+  try {
+    return run(options, engine);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s %.*s: %s\n", argv[0], static_cast<int>(options.scene->name.size()),
+                 options.scene->name.data(), e.what());
+    return 1;
+  }
+}
+
+}  // namespace mink::bench

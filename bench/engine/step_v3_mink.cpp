@@ -1,0 +1,89 @@
+// Our side of the race against Box2D v3 (bench/run_step.sh): the built-in scene of the suite
+// scene's name, on WorldDef::worker_count workers, in one of two settings:
+//   mink_matched   Box2D v3's app's world: 1/60 s steps of 4 substeps, 30 Hz contacts of
+//                  damping ratio 10, 3 m/s push-out, joints at 60 Hz and damping ratio 2,
+//                  restitution and hit thresholds 1 m/s, 400 m/s top speed
+//   mink_defaults  our own solver defaults (WorldDef{}: 5 substeps, 60 Hz contacts, ...)
+// Both keep the scene's gravity and sleep as Box2D v3's app does (off only where the scene
+// turns it off, or everywhere with --sleep=off), so the two differ only in what the solver is
+// asked to do.
+// A suite scene that is not one of our built-ins is skipped. See step_race.hpp for the
+// command line.
+
+#include <algorithm>
+#include <memory>
+
+#include "mink/engine/scene.hpp"
+#include "mink/engine/world.hpp"
+#include "step_race.hpp"
+
+namespace mink::bench {
+namespace {
+
+void match_box2d_v3(WorldDef& world) {
+  world.time_step = 1.0 / 60.0;
+  world.substeps = 4;
+  world.contact_hertz = 30;
+  world.contact_damping_ratio = 10;
+  world.contact_push_max_velocity = 3;
+  world.joint_hertz = 60;
+  world.joint_damping_ratio = 2;
+  world.restitution_threshold = 1;
+  world.hit_event_threshold = 1;
+  world.max_linear_speed = 400;
+}
+
+void our_solver_defaults(WorldDef& world) {
+  const WorldDef ours;
+  world.time_step = ours.time_step;
+  world.substeps = ours.substeps;
+  world.contact_hertz = ours.contact_hertz;
+  world.contact_damping_ratio = ours.contact_damping_ratio;
+  world.contact_push_max_velocity = ours.contact_push_max_velocity;
+  world.joint_hertz = ours.joint_hertz;
+  world.joint_damping_ratio = ours.joint_damping_ratio;
+  world.restitution_threshold = ours.restitution_threshold;
+  world.hit_event_threshold = ours.hit_event_threshold;
+  world.max_linear_speed = ours.max_linear_speed;
+}
+
+// A scene's world and what it does as it runs. The one place a run drives a scene: a scene's
+// per-step schedule (rain's ragdolls, junkyard's pusher) is called from step().
+class MinkWorld final : public RaceWorld {
+ public:
+  explicit MinkWorld(const SceneDef& scene) : world_(build_world(scene)) {}
+
+  void step(int /*index*/) override { world_.step(); }
+
+  RaceCounts counts() const override {
+    return {static_cast<long long>(world_.body_count()),
+            static_cast<long long>(world_.shape_count()),
+            static_cast<long long>(world_.joint_count()),
+            static_cast<long long>(world_.counters().contacts)};
+  }
+
+ private:
+  World world_;
+};
+
+std::unique_ptr<RaceWorld> build(const RaceRequest& request) {
+  const auto names = builtin_scene_names();
+  if (std::find(names.begin(), names.end(), request.scene->name) == names.end()) return nullptr;
+  SceneDef scene = builtin_scene(request.scene->name);
+  if (request.implementation == "mink_matched") {
+    match_box2d_v3(scene.world);
+  } else {
+    our_solver_defaults(scene.world);
+  }
+  scene.world.enable_sleep = request.sleep;
+  scene.world.worker_count = request.workers;
+  return std::make_unique<MinkWorld>(scene);
+}
+
+}  // namespace
+}  // namespace mink::bench
+
+int main(int argc, char** argv) {
+  using namespace mink::bench;
+  return race_main(argc, argv, RaceEngine{{"mink_matched", "mink_defaults"}, build});
+}

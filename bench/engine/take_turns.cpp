@@ -1,0 +1,114 @@
+// Runs commands one at a time, in turns, so that engines raced on a shared machine see the same
+// machine: a busy minute falls on all of them rather than on whichever ran then. Each command
+// stops itself (SIGSTOP) where its turn may end, as the race runners do with --turns=K; the
+// command whose turn it is runs alone, every other one is stopped. Commands start in order, one
+// at a time, each until its first stop, so their set-up does not overlap either; then each
+// live command in order is continued until it stops again or exits, round after round.
+//
+// Usage: mink_bench_take_turns CMD [ARGS...] [--and CMD [ARGS...]]...
+// Output and errors are the commands' own. The exit status is the highest of the commands'
+// (a command killed by a signal counts as 128 + the signal), and each non-zero one is named on
+// stderr.
+
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace {
+
+struct Command {
+  std::vector<char*> argv;  // null-terminated
+  pid_t pid = -1;
+  bool done = false;
+  int status = 0;
+};
+
+std::string describe(const Command& command) {
+  std::string text;
+  for (const char* arg : command.argv) {
+    if (arg == nullptr) break;
+    if (!text.empty()) text += ' ';
+    text += arg;
+  }
+  return text;
+}
+
+// Waits until the command stops or ends; false if it ended.
+bool wait_for_stop(Command& command) {
+  int status = 0;
+  while (waitpid(command.pid, &status, WUNTRACED) < 0) {
+    if (errno != EINTR) {
+      std::perror("mink_bench_take_turns: waitpid");
+      command.done = true;
+      command.status = 1;
+      return false;
+    }
+  }
+  if (WIFSTOPPED(status)) return true;
+  command.done = true;
+  command.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return false;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<Command> commands(1);
+  for (int i = 1; i < argc; ++i) {
+    if (std::string_view(argv[i]) == "--and") {
+      commands.emplace_back();
+    } else {
+      commands.back().argv.push_back(argv[i]);
+    }
+  }
+  for (Command& command : commands) {
+    if (command.argv.empty()) {
+      std::fprintf(stderr, "usage: %s CMD [ARGS...] [--and CMD [ARGS...]]...\n", argv[0]);
+      return 2;
+    }
+    command.argv.push_back(nullptr);
+  }
+
+  for (Command& command : commands) {
+    std::fflush(stdout);
+    command.pid = fork();
+    if (command.pid < 0) {
+      std::perror("mink_bench_take_turns: fork");
+      return 1;
+    }
+    if (command.pid == 0) {
+      execvp(command.argv[0], command.argv.data());
+      std::fprintf(stderr, "mink_bench_take_turns: %s: %s\n", command.argv[0],
+                   std::strerror(errno));
+      _exit(127);
+    }
+    wait_for_stop(command);
+  }
+  for (bool any = true; any;) {
+    any = false;
+    for (Command& command : commands) {
+      if (command.done) continue;
+      kill(command.pid, SIGCONT);
+      any = wait_for_stop(command) || any;
+    }
+  }
+
+  int highest = 0;
+  for (const Command& command : commands) {
+    if (command.status != 0) {
+      std::fprintf(stderr, "mink_bench_take_turns: exit status %d: %s\n", command.status,
+                   describe(command).c_str());
+    }
+    highest = std::max(highest, command.status);
+  }
+  return highest;
+}
