@@ -8,6 +8,14 @@
 // gives for AVX-sized vectors without AVX enabled does not concern them.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
+// The load-time pick runs before ThreadSanitizer's runtime is up, and its instrumented
+// resolver would crash there: a ThreadSanitizer build keeps the baseline kernels only.
+#if defined(__SANITIZE_THREAD__)
+#define MINK_WIDE_KERNEL
+#else
+#define MINK_WIDE_KERNEL __attribute__((target_clones("avx2", "default")))
+#endif
+
 namespace mink::detail {
 
 namespace {
@@ -124,9 +132,8 @@ __attribute__((always_inline)) inline void solve_wide_impl(
 
 }  // namespace
 
-__attribute__((target_clones("avx2", "default"))) void warm_start_wide(SolverBody* bodies,
-                                                                       WideConstraint* begin,
-                                                                       WideConstraint* end) {
+MINK_WIDE_KERNEL void warm_start_wide(SolverBody* bodies, WideConstraint* begin,
+                                      WideConstraint* end) {
   for (WideConstraint* c = begin; c != end; ++c) {
     WideBody a = gather(bodies, c->body_a);
     WideBody b = gather(bodies, c->body_b);
@@ -148,9 +155,9 @@ __attribute__((target_clones("avx2", "default"))) void warm_start_wide(SolverBod
   }
 }
 
-__attribute__((target_clones("avx2", "default"))) void solve_wide(
-    SolverBody* bodies, WideConstraint* begin, WideConstraint* end, WideMaxImpulse* max_impulse,
-    Real inv_h, Real max_push, bool use_bias) {
+MINK_WIDE_KERNEL void solve_wide(SolverBody* bodies, WideConstraint* begin, WideConstraint* end,
+                                 WideMaxImpulse* max_impulse, Real inv_h, Real max_push,
+                                 bool use_bias) {
   if (max_impulse) {
     solve_wide_impl<true>(bodies, begin, end, max_impulse, inv_h, max_push, use_bias);
   } else {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 #include "world_state.hpp"
 
@@ -10,6 +11,21 @@ namespace mink {
 
 using detail::Body;
 using detail::Contact;
+
+namespace {
+
+constexpr std::uint32_t kPrefetchAhead = 8;
+
+// The part of a contact the solver reads and writes: the manifold, bodies and impulses.
+void prefetch_contact(const Contact& c) {
+  const char* bytes = reinterpret_cast<const char*>(&c);
+  static_assert(offsetof(Contact, friction) + sizeof(Real) * 2 <= 192);
+  __builtin_prefetch(bytes);
+  __builtin_prefetch(bytes + 64);
+  __builtin_prefetch(bytes + 128);
+}
+
+}  // namespace
 
 void WorldState::prepare_contacts() {
   const Real h = dt / substeps;
@@ -60,17 +76,23 @@ void WorldState::prepare_contacts() {
   // them first, then each constraint is built straight into its slot.
   constraint_contacts.clear();
   constraint_bodies.clear();
-  for (const std::uint32_t ci : step_contacts) {
+  // A dynamic body is the only kind with mass, so the compact solver records tell which
+  // bodies the solver moves; the still body is fixed as well (the colouring relies on it).
+  const auto fixed = [&](std::int32_t index) {
+    return index < 0 || solver_info[static_cast<std::size_t>(index)].inv_mass == 0;
+  };
+  for (std::size_t k = 0; k < step_contacts.size(); ++k) {
+    if (k + kPrefetchAhead < step_contacts.size()) {
+      prefetch_contact(contacts[step_contacts[k + kPrefetchAhead]]);
+    }
+    const std::uint32_t ci = step_contacts[k];
     const Contact& c = contacts[ci];
     if (c.manifold.point_count == 0) continue;
     const std::int32_t ia = body_solver_index[c.body_a], ib = body_solver_index[c.body_b];
     if (ia < 0 && ib < 0) continue;
     constraint_contacts.push_back(ci);
-    // The still body is fixed as well (the colouring relies on it), so only the records of
-    // moving bodies are read.
-    constraint_bodies.push_back({ia < 0 ? still : ia, ib < 0 ? still : ib,
-                                 ia < 0 || bodies[c.body_a].type != BodyType::dynamic,
-                                 ib < 0 || bodies[c.body_b].type != BodyType::dynamic, c.color});
+    constraint_bodies.push_back(
+        {ia < 0 ? still : ia, ib < 0 ? still : ib, fixed(ia), fixed(ib), c.color});
   }
   // Constraints in order of their first moving body (a stable counting sort): neighbouring
   // constraints then touch neighbouring bodies and the solver's gathers stay in cache.
@@ -156,7 +178,14 @@ void WorldState::prepare_contacts() {
   // Each constraint is built into its own slot, so they are built in parallel.
   tasks.parallel_for(static_cast<std::uint32_t>(constraint_contacts.size()), 256,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
-                       for (std::uint32_t r = begin; r < end; ++r) build(r, worker);
+                       for (std::uint32_t r = begin; r < end; ++r) {
+                         // Constraints go in body order, so their contacts are scattered
+                         // through memory: ask for those a few ahead early.
+                         if (r + kPrefetchAhead < end) {
+                           prefetch_contact(contacts[constraint_contacts[r + kPrefetchAhead]]);
+                         }
+                         build(r, worker);
+                       }
                      });
   contact_solver.finish();
 

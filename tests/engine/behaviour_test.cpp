@@ -183,11 +183,7 @@ TEST(Behaviour, RestitutionBelowThresholdDoesNotBounce) {
 }
 
 TEST(Behaviour, RainGivesNoNanAndNothingBelowTheFloor) {
-#ifdef MINK_SANITIZED_BUILD
-  const int steps = 1000;
-#else
-  const int steps = 10000;
-#endif
+  const int steps = test::long_run(10000, 1000);
   World world = build_world(rain_scene(120, 3));
   const std::vector<BodyId> bodies = world.bodies();
   for (int i = 0; i < steps; ++i) {

@@ -31,6 +31,18 @@ inline std::uint64_t state_hash(const World& world) {
   return hash;
 }
 
+// A long run's step count: `sanitized_steps` under the sanitizers, whose slowdown would make
+// the full run take minutes.
+inline constexpr int long_run(int steps, int sanitized_steps) {
+#ifdef MINK_SANITIZED_BUILD
+  static_cast<void>(steps);
+  return sanitized_steps;
+#else
+  static_cast<void>(sanitized_steps);
+  return steps;
+#endif
+}
+
 // Default settings with sleeping off, so nothing stops moving under a test's feet.
 inline WorldDef free_world() {
   WorldDef def;
