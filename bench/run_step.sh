@@ -12,14 +12,21 @@
 #    scene turns it off (joint_grid, large_pyramid, many_pyramids), on elsewhere. A scene we
 #    have no built-in for is skipped on our side, with a message.
 #    Every run is a process of its own (bench/engine/step_race.hpp). The three runs of a scene
-#    and worker count are interleaved: they take turns every 20 steps, one running while the
-#    others are stopped (bench/engine/take_turns.cpp), so a busy moment of a shared machine
-#    falls on all three alike; rounds repeat the whole suite. Step times are wall times; the
-#    first step of a run is not timed, as in Box2D v3's app, nor the first of each turn. It
-#    writes
+#    and worker count are interleaved: they take turns of 200 ms, one running while the others
+#    are stopped (bench/engine/take_turns.cpp), so a busy moment of a shared machine falls on
+#    all three alike; rounds repeat the whole suite. Step times are wall times, as in
+#    Box2D v3's app; the first step of a run is not timed, as there, nor the first of each turn.
+#    It writes
 #      step_v3.csv          case,size,implementation,median_ns: the median wall time of a step
 #                           over the timed steps of all rounds (size: workers; implementation:
 #                           box2d_v3, mink_matched or mink_defaults)
+#      step_v3_cpu.csv      the same for the CPU time of a step (every thread of the process).
+#                           On a busy machine every process waits for a core now and then; a
+#                           short step mostly falls between two waits and a long one mostly
+#                           does not, so there the median wall time favours the faster engine.
+#                           The CPU time leaves the waits out: at 1 worker it is the fair
+#                           figure on a busy machine; at 2 it is the work of both workers,
+#                           spinning included, not the time a step takes
 #      step_v3_ratios.csv   ours / Box2D v3 per scene, one column per setting and worker count
 #      step_v3.png          those ratios as bars (gnuplot, bench/plot_step_v3.gp)
 #      step_v3_memory.csv   case,implementation,peak_kib: the peak resident memory of the
@@ -42,7 +49,7 @@
 #   MINK_BENCH_STEP_V3_SCENES="a b"   part 2: only these scenes (default: all ten)
 #   MINK_BENCH_STEP_V3_WORKERS="1 2"  part 2: worker counts (default 1 and 2)
 #   MINK_BENCH_STEP_V3_IMPLEMENTATIONS="box2d_v3 mink_matched"   part 2: only these
-#   MINK_BENCH_STEP_V3_TURN=N         part 2: steps per turn (default 20)
+#   MINK_BENCH_STEP_V3_TURN_MS=T      part 2: length of a turn in ms (default 200)
 #   MINK_BENCH_STEP_V3_SLEEP=off      part 2: sleeping off in every scene of both engines
 #                                     (default app: as Box2D v3's app has it)
 # A quick run: MINK_BENCH_STEP_RIVALS=box2d-v3 MINK_BENCH_STEP_V3_STEPS=60 bench/run_step.sh build
@@ -77,7 +84,7 @@ fi
 
 turns_binary=$build_dir/bin/mink_bench_take_turns
 rounds=${MINK_BENCH_STEP_V3_ROUNDS:-1}
-turn=${MINK_BENCH_STEP_V3_TURN:-20}
+turn_ms=${MINK_BENCH_STEP_V3_TURN_MS:-200}
 workers_list=${MINK_BENCH_STEP_V3_WORKERS:-1 2}
 sleep_mode=${MINK_BENCH_STEP_V3_SLEEP:-app}
 steps_override=${MINK_BENCH_STEP_V3_STEPS:-}
@@ -109,7 +116,7 @@ if [ -n "$steps_override" ] && ! [[ $steps_override =~ ^[1-9][0-9]*$ ]]; then
     fi
   done
 fi
-for setting in "MINK_BENCH_STEP_V3_ROUNDS=$rounds" "MINK_BENCH_STEP_V3_TURN=$turn"; do
+for setting in "MINK_BENCH_STEP_V3_ROUNDS=$rounds" "MINK_BENCH_STEP_V3_TURN_MS=$turn_ms"; do
   if ! [[ ${setting#*=} =~ ^[1-9][0-9]*$ ]]; then
     echo "run_step.sh: $setting: expected a positive whole number" >&2
     exit 2
@@ -134,12 +141,12 @@ trap 'rm -rf "$work"' EXIT
 first_workers=${workers_list%% *}
 failed=""
 started=$SECONDS
-echo "Race against Box2D v3: $rounds round(s), workers: $workers_list, turns of $turn steps," \
+echo "Race against Box2D v3: $rounds round(s), workers: $workers_list, turns of $turn_ms ms," \
   "sleeping: $sleep_mode"
 for round in $(seq "$rounds"); do
   for scene in $scenes; do
     for workers in $workers_list; do
-      # The implementations of one scene and worker count take turns every $turn steps.
+      # The implementations of one scene and worker count take turns of $turn_ms ms.
       commands=()
       for implementation in $implementations; do
         runner=$mink_runner
@@ -147,7 +154,7 @@ for round in $(seq "$rounds"); do
         if [ ${#commands[@]} -gt 0 ]; then commands+=(--and); fi
         # Unquoted: steps_arg prints one word or none.
         commands+=("$runner" "$scene" --workers="$workers" --implementation="$implementation"
-          --sleep="$sleep_mode" --turns="$turn" --samples="$work/$scene.$workers.$implementation"
+          --sleep="$sleep_mode" --turn-ms="$turn_ms" --samples="$work/$scene.$workers.$implementation"
           $(steps_arg "$scene"))
       done
       status=0
@@ -171,20 +178,27 @@ for round in $(seq "$rounds"); do
 done
 echo "Race against Box2D v3 took $((SECONDS - started)) s"
 
-# Medians over the pooled timed steps of every round.
+# Medians over the pooled timed steps of every round: wall times (column 1 of the samples)
+# into step_v3.csv, CPU times (column 2) into step_v3_cpu.csv.
 v3_csv=$results_dir/step_v3.csv
-echo "case,size,implementation,median_ns" >"$v3_csv"
-for scene in $scenes; do
-  for workers in $workers_list; do
-    for implementation in $implementations; do
-      samples=$work/$scene.$workers.$implementation
-      if [ ! -s "$samples" ]; then continue; fi
-      sort -n "$samples" | awk -v row="$scene,$workers,$implementation" '
-        { v[NR] = $1 }
-        END { printf "%s,%.0f\n", row, NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+cpu_csv=$results_dir/step_v3_cpu.csv
+write_medians() {
+  local column=$1 scene workers implementation samples
+  echo "case,size,implementation,median_ns"
+  for scene in $scenes; do
+    for workers in $workers_list; do
+      for implementation in $implementations; do
+        samples=$work/$scene.$workers.$implementation
+        if [ ! -s "$samples" ]; then continue; fi
+        cut -d' ' -f"$column" "$samples" | sort -n | awk -v row="$scene,$workers,$implementation" '
+          { v[NR] = $1 }
+          END { printf "%s,%.0f\n", row, NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+      done
     done
   done
-done >>"$v3_csv"
+}
+write_medians 1 >"$v3_csv"
+write_medians 2 >"$cpu_csv"
 
 memory_csv=$results_dir/step_v3_memory.csv
 counts_csv=$results_dir/step_v3_counts.csv
@@ -217,43 +231,50 @@ awk -v first_workers="$first_workers" -v scenes="$scenes" \
 # where the two are not the same scene: their shape or joint counts differ (said on stderr; the
 # bodies may differ, as a static ground is one body or several).
 ratios_csv=$results_dir/step_v3_ratios.csv
-awk -F, -v workers_list="$workers_list" -v scenes="$scenes" '
-  FNR == 1 { ++file; next }
-  file == 1 { content[$1 "," $2] = $4 "," $5; next }
-  { t[$1 "," $2 "," $3] = $4 }
-  END {
-    nw = split(workers_list, w, " ")
-    ns = split(scenes, s, " ")
-    no = split("mink_matched mink_defaults", ours, " ")
-    header = "case"
-    for (j = 1; j <= nw; ++j) {
-      for (k = 1; k <= no; ++k) header = header "," ours[k] "_" w[j] "w"
-    }
-    print header
-    for (i = 1; i <= ns; ++i) {
-      row = s[i]
-      theirs = content[s[i] ",box2d_v3"]
+# write_ratios MEDIANS_CSV WARN: the ratios of those medians; WARN 1 names the scenes left out.
+write_ratios() {
+  awk -F, -v workers_list="$workers_list" -v scenes="$scenes" -v warn="$2" '
+    FNR == 1 { ++file; next }
+    file == 1 { content[$1 "," $2] = $4 "," $5; next }
+    { t[$1 "," $2 "," $3] = $4 }
+    END {
+      nw = split(workers_list, w, " ")
+      ns = split(scenes, s, " ")
+      no = split("mink_matched mink_defaults", ours, " ")
+      header = "case"
       for (j = 1; j <= nw; ++j) {
-        v3 = t[s[i] "," w[j] ",box2d_v3"]
-        for (k = 1; k <= no; ++k) {
-          mine = t[s[i] "," w[j] "," ours[k]]
-          same = content[s[i] "," ours[k]] == theirs
-          if (mine != "" && v3 != "" && !same && !((s[i] "," ours[k]) in said)) {
-            said[s[i] "," ours[k]] = 1
-            printf "run_step.sh: %s: no ratio for %s: its shapes,joints %s are not Box2D v3%cs %s" \
-                   " (not the same scene)\n", s[i], ours[k], content[s[i] "," ours[k]], 39, theirs \
-                   >"/dev/stderr"
-          }
-          row = row "," (v3 != "" && mine != "" && same ? sprintf("%.3f", mine / v3) : "")
-        }
+        for (k = 1; k <= no; ++k) header = header "," ours[k] "_" w[j] "w"
       }
-      print row
-    }
-  }' "$counts_csv" "$v3_csv" >"$ratios_csv"
+      print header
+      for (i = 1; i <= ns; ++i) {
+        row = s[i]
+        theirs = content[s[i] ",box2d_v3"]
+        for (j = 1; j <= nw; ++j) {
+          v3 = t[s[i] "," w[j] ",box2d_v3"]
+          for (k = 1; k <= no; ++k) {
+            mine = t[s[i] "," w[j] "," ours[k]]
+            same = content[s[i] "," ours[k]] == theirs
+            if (warn && mine != "" && v3 != "" && !same && !((s[i] "," ours[k]) in said)) {
+              said[s[i] "," ours[k]] = 1
+              printf "run_step.sh: %s: no ratio for %s: its shapes,joints %s are not" \
+                     " Box2D v3%cs %s (not the same scene)\n", s[i], ours[k],
+                     content[s[i] "," ours[k]], 39, theirs >"/dev/stderr"
+            }
+            row = row "," (v3 != "" && mine != "" && same ? sprintf("%.3f", mine / v3) : "")
+          }
+        }
+        print row
+      }
+    }' "$counts_csv" "$1"
+}
+write_ratios "$v3_csv" 1 >"$ratios_csv"
 
 echo
 echo "Ours / Box2D v3 (median step time; below 1: ours is faster), $ratios_csv:"
 column -s, -t "$ratios_csv"
+echo
+echo "The same for CPU time (at 1 worker the time on a core of its own; $cpu_csv):"
+write_ratios "$cpu_csv" 0 | column -s, -t
 echo
 echo "Peak memory (KiB, $first_workers worker(s)), $memory_csv:"
 column -s, -t "$memory_csv"

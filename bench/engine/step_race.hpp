@@ -8,21 +8,23 @@
 //
 // Usage: RUNNER --list    (the suite: each scene's name and steps, one a line)
 //        RUNNER SCENE [--workers=N] [--steps=N] [--warmup=K] [--samples=FILE]
-//               [--implementation=NAME] [--sleep=app|off] [--turns=K]
+//               [--implementation=NAME] [--sleep=app|off] [--turn-ms=T]
 //   --workers=N         threads stepping the world, the calling one among them (default 1)
 //   --steps=N           steps to run (default: as many as Box2D v3's app runs the scene)
 //   --warmup=K          first steps left out of the timing (default 1, as Box2D v3's app)
-//   --samples=FILE      append each timed step's wall time in nanoseconds, one a line
+//   --samples=FILE      append each timed step's wall time and CPU time (every thread of the
+//                       process) in nanoseconds, one step a line
 //   --implementation=   which of the runner's implementations (default: its first)
 //   --sleep=app|off     app (default): sleeping as Box2D v3's app has it, off only where the
 //                       scene turns it off; off: off in every scene
-//   --turns=K           stop (SIGSTOP) once the world is built and after every K steps,
-//                       for mink_bench_take_turns to run the runners of a race in turns; the
-//                       first step after each stop is not timed (its caches are the other
-//                       engine's)
+//   --turn-ms=T         stop (SIGSTOP) once the world is built, and then after the first step
+//                       that ends T ms or more after the last stop, for mink_bench_take_turns to
+//                       run the runners of a race in turns; the first step after each stop is
+//                       not timed (its caches are the other engine's)
 //
 // It prints one line, `race scene=... workers=... implementation=... steps=... timed=...
-// median_ns=... peak_kib=... base_kib=... bodies=... shapes=... joints=... contacts=...`
+// median_ns=... cpu_median_ns=... peak_kib=... base_kib=... bodies=... shapes=... joints=...
+// contacts=...`
 // (peak_kib: the process's peak resident memory; base_kib: the same before the scene was
 // built), or `IMPLEMENTATION: no scene NAME; skipped` when the engine does not have the scene.
 // Exit status 0 after either, 2 for a usage error, 1 for a failure.

@@ -1,9 +1,12 @@
 // Runs commands one at a time, in turns, so that engines raced on a shared machine see the same
 // machine: a busy minute falls on all of them rather than on whichever ran then. Each command
-// stops itself (SIGSTOP) where its turn may end, as the race runners do with --turns=K; the
+// stops itself (SIGSTOP) where its turn ends, as the race runners do with --turn-ms=T; the
 // command whose turn it is runs alone, every other one is stopped. Commands start in order, one
 // at a time, each until its first stop, so their set-up does not overlap either; then each
 // live command in order is continued until it stops again or exits, round after round.
+// Turns should be equally long in time, not in work: the kernel's scheduler favours, against
+// other load, a process that runs a smaller share of the time, which would be the faster
+// engine's if turns were so many steps each.
 //
 // Usage: mink_bench_take_turns CMD [ARGS...] [--and CMD [ARGS...]]...
 // Output and errors are the commands' own. The exit status is the highest of the commands'
