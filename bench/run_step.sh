@@ -123,16 +123,15 @@ for setting in "MINK_BENCH_STEP_V3_ROUNDS=$rounds" "MINK_BENCH_STEP_V3_TURN_MS=$
   fi
 done
 
-# The --steps argument for a scene, from MINK_BENCH_STEP_V3_STEPS (none: the app's count).
-steps_arg() {
+# The steps for a scene from MINK_BENCH_STEP_V3_STEPS; nothing for the app's count.
+steps_for() {
   local scene=$1 entry
-  if [ -z "$steps_override" ]; then return; fi
   if [[ $steps_override =~ ^[0-9]+$ ]]; then
-    echo "--steps=$steps_override"
+    echo "$steps_override"
     return
   fi
   for entry in ${steps_override//,/ }; do
-    if [ "${entry%%=*}" = "$scene" ]; then echo "--steps=${entry#*=}"; fi
+    if [ "${entry%%=*}" = "$scene" ]; then echo "${entry#*=}"; fi
   done
 }
 
@@ -152,10 +151,10 @@ for round in $(seq "$rounds"); do
         runner=$mink_runner
         if [ "$implementation" = box2d_v3 ]; then runner=$v3_runner; fi
         if [ ${#commands[@]} -gt 0 ]; then commands+=(--and); fi
-        # Unquoted: steps_arg prints one word or none.
+        steps=$(steps_for "$scene")
         commands+=("$runner" "$scene" --workers="$workers" --implementation="$implementation"
           --sleep="$sleep_mode" --turn-ms="$turn_ms" --samples="$work/$scene.$workers.$implementation"
-          $(steps_arg "$scene"))
+          ${steps:+"--steps=$steps"})
       done
       status=0
       "$turns_binary" "${commands[@]}" >"$work/output" || status=$?
@@ -165,9 +164,9 @@ for round in $(seq "$rounds"); do
             echo "round=$round $line" >>"$work/runs"
             echo "$line" | awk -v round="$round" '{
               for (i = 1; i <= NF; ++i) { split($i, kv, "="); f[kv[1]] = kv[2] }
-              printf "round %s  %-13s %d worker(s)  %-13s %9.3f ms/step  peak %7.1f MiB\n",
-                     round, f["scene"], f["workers"], f["implementation"], f["median_ns"] / 1e6,
-                     f["peak_kib"] / 1024 }'
+              printf "round %s  %-13s %d worker(s)  %-13s %9.3f ms/step (CPU %.3f)" \
+                     "  peak %6.1f MiB\n", round, f["scene"], f["workers"], f["implementation"],
+                     f["median_ns"] / 1e6, f["cpu_median_ns"] / 1e6, f["peak_kib"] / 1024 }'
             ;;
           *) if [ "$round" = 1 ] && [ "$workers" = "$first_workers" ]; then echo "$line"; fi ;;
         esac
