@@ -14,7 +14,7 @@ if (terminal eq 'pngcairo') {
 }
 set output png
 
-set title "Step time against Box2D v3 on its benchmark suite: ours / Box2D v3 (median step)" \
+set title "Step time against Box2D v3 on its benchmark suite: ours / Box2D v3 (median wall time)" \
   font ',14'
 set style data histograms
 set style histogram clustered gap 1
