@@ -98,9 +98,10 @@ int run_scene(const RunOptions& options, Streams streams) {
   for (const std::string& setting : options.world_settings) {
     const std::size_t equals = setting.find('=');
     if (equals == std::string::npos || equals == 0) {
-      throw InvalidArgumentError("--world takes KEY=VALUE (a key of the scene file's world "
-                                 "object), got '" +
-                                 setting + "'");
+      throw InvalidArgumentError(
+          "--world takes KEY=VALUE (a key of the scene file's world "
+          "object), got '" +
+          setting + "'");
     }
     set_world_setting(scene.world, std::string_view(setting).substr(0, equals),
                       std::string_view(setting).substr(equals + 1));
@@ -146,7 +147,7 @@ int run_scene(const RunOptions& options, Streams streams) {
   if (!options.stats.empty()) {
     stats = open_output_file(options.stats, "--stats file");
     stats << "step,time,bodies,awake,pairs,contacts,kinetic_energy,step_ms,pairs_ms,collide_ms,"
-             "islands_ms,prepare_ms,solve_ms,finish_ms\n";
+             "islands_ms,prepare_ms,solve_ms,continuous_ms,finish_ms\n";
   }
   std::optional<BodyTrace> trace;
   if (!options.trace.empty()) {
@@ -188,11 +189,11 @@ int run_scene(const RunOptions& options, Streams streams) {
     if (stats.is_open()) {
       const StepProfile& p = world.profile();
       std::snprintf(line, sizeof line,
-                    "%llu,%.17g,%zu,%zu,%zu,%zu,%.17g,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n",
+                    "%llu,%.17g,%zu,%zu,%zu,%zu,%.17g,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n",
                     static_cast<unsigned long long>(world.step_count()), world.time(),
                     world.body_count(), c.awake_bodies, c.broadphase_pairs, c.touching_contacts,
                     kinetic_energy(world), ms, p.pairs, p.collide, p.islands, p.prepare, p.solve,
-                    p.finish);
+                    p.continuous, p.finish);
       stats << line;
     }
     if (trace) trace->write_step(world);
@@ -277,10 +278,11 @@ Action add_run_command(CLI::App& app, Streams streams) {
                    "workers the step runs on, this thread among them (default 1); the results "
                    "are bitwise the same at any count")
       ->check(CLI::Range(1, 256));
-  command->add_option("--world", options->world_settings,
-                      "a world setting as KEY=VALUE, keys and values as in the scene file's "
-                      "world object (e.g. --world substeps=4 --world enable_sleep=false); "
-                      "repeatable, applied in order over the scene's own")
+  command
+      ->add_option("--world", options->world_settings,
+                   "a world setting as KEY=VALUE, keys and values as in the scene file's "
+                   "world object (e.g. --world substeps=4 --world enable_sleep=false); "
+                   "repeatable, applied in order over the scene's own")
       ->allow_extra_args(false);  // one setting per --world: the scene may follow it
   return [options, streams] { return run_scene(*options, streams); };
 }

@@ -214,6 +214,7 @@ SceneDef capture_scene(const World& world) {
     def.enabled = world.is_enabled(id);
     def.fixed_rotation = world.fixed_rotation(id);
     def.bullet = world.is_bullet(id);
+    def.continuous_threshold = world.continuous_threshold(id);
     def.user_data = world.user_data(id);
     body.shapes = captured_shapes(world, id);
     scene.bodies.push_back(std::move(body));

@@ -48,7 +48,7 @@ TEST(RunCommand, StatsCsvHasOneRowPerStepAndTheIssueColumns) {
   ASSERT_EQ(lines.size(), 31u);
   EXPECT_EQ(lines[0],
             "step,time,bodies,awake,pairs,contacts,kinetic_energy,step_ms,pairs_ms,collide_ms,"
-            "islands_ms,prepare_ms,solve_ms,finish_ms");
+            "islands_ms,prepare_ms,solve_ms,continuous_ms,finish_ms");
   const std::size_t bodies = builtin_scene("pyramid").bodies.size();
   for (std::size_t i = 1; i < lines.size(); ++i) {
     unsigned long long step = 0;

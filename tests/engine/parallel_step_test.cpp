@@ -80,6 +80,27 @@ TEST(WorkerCounts, BouncingRainAgrees) {
   }
 }
 
+// Bodies thrown hard at the ground and at each other: continuous collision sweeps them in
+// parallel, with the same stops at any worker count.
+TEST(WorkerCounts, FastRainAgrees) {
+  SceneDef scene = rain_scene(200, 9);
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    BodyDef& body = scene.bodies[i].body;
+    if (body.type != BodyType::dynamic) continue;
+    body.linear_velocity = Vec2(i % 2 == 0 ? 40.0 : -40.0, -120);
+    body.angular_velocity = i % 3 == 0 ? 50 : -20;
+  }
+  scene.world.enable_sleep = false;
+  World probe = build_world(scene);
+  probe.step();
+  EXPECT_GT(probe.counters().fast_bodies, 100u);
+  const std::uint64_t one = run(scene, 120);
+  for (const int workers : {2, 4}) {
+    scene.world.worker_count = workers;
+    EXPECT_EQ(run(scene, 120), one) << workers << " workers";
+  }
+}
+
 TEST(WorkerCounts, LargeStackAgreesAtOneAndTwoWorkers) {
   SceneDef scene = builtin_scene("large_pyramid");
   scene.world.worker_count = 1;
