@@ -104,6 +104,12 @@ void plot_counts(const ContactComparison& c, const std::string& scene, GlBackend
 int run_compare(const CompareOptions& options, Streams streams) {
   const GlBackend backend = parse_gl_backend(options.gl);
   const SceneDef scene = resolve_scene(options.scene);
+  if (scene.schedule) {
+    // Its actions act on our world only: Box2D 2.4.1 would run another scene.
+    throw InvalidArgumentError("scene '" + options.scene +
+                               "' changes as it runs (its schedule creates, destroys or steers "
+                               "bodies), which Box2D 2.4.1 cannot follow");
+  }
   const ContactComparison c = compare_contacts(scene, options.steps, options.every, kBand);
   const std::filesystem::path out(options.out);
   make_directories(out, "--out");

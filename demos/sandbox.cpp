@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <utility>
 
+#include "mink/engine/scene_file.hpp"
 #include "mink/engine/shape_def.hpp"
 #include "mink/geometry/point_sets.hpp"
 #include "mink/render/bitmap_font.hpp"
-#include "mink/engine/scene_file.hpp"
 #include "text_wrap.hpp"
 
 namespace mink::cli {
@@ -50,13 +50,13 @@ Sandbox::Sandbox(Renderer& renderer, const std::string& scene)
     : Sandbox(renderer, scene, resolve_scene(scene)) {}
 
 Sandbox::Sandbox(Renderer& renderer, std::string name, SceneDef scene)
-    : renderer_(renderer), scene_(std::move(name)), scene_def_(std::move(scene)) {
+    : renderer_(renderer), scene_(std::move(name)), scene_def_(std::move(scene)), run_(scene_def_) {
   renderer_.layers = draw_shapes | draw_contact_points;
-  reset();
+  fit_camera();
 }
 
 void Sandbox::reset() {
-  world_ = build_world(scene_def_);
+  run_ = SceneRun(scene_def_);
   dragged_.reset();
   drops_ = 0;
   fit_camera();
@@ -66,14 +66,15 @@ void Sandbox::fit_camera() {
   // The camera shows the moving bodies (every shape when nothing moves) with room around
   // them and above for dropping hulls; it stays put afterwards so the mouse maps to the same
   // place in the world. Grounds reach past the edges.
+  const World& world = run_.world();
   for (const bool moving_only : {true, false}) {
     Vec2 lower(0, 0);
     Vec2 upper(0, 0);
     bool first = true;
-    for (const BodyId body : world_.bodies()) {
-      if (moving_only && world_.body_type(body) == BodyType::static_body) continue;
-      for (const ShapeId shape : world_.body_shapes(body)) {
-        const Aabb box = world_.shape_aabb(shape);
+    for (const BodyId body : world.bodies()) {
+      if (moving_only && world.body_type(body) == BodyType::static_body) continue;
+      for (const ShapeId shape : world.body_shapes(body)) {
+        const Aabb box = world.shape_aabb(shape);
         lower = first ? box.lower : lower.cwiseMin(box.lower);
         upper = first ? box.upper : upper.cwiseMax(box.upper);
         first = false;
@@ -113,12 +114,13 @@ void Sandbox::key(std::string_view name) {
 
 void Sandbox::mouse_down(const Vec2& pixel) {
   cursor_ = renderer_.camera().pixel_to_world(pixel);
-  for (const ShapeId shape : world_.query_point(cursor_)) {
-    const BodyId body = world_.shape_body(shape);
-    if (world_.body_type(body) != BodyType::dynamic) continue;
+  World& world = run_.world();
+  for (const ShapeId shape : world.query_point(cursor_)) {
+    const BodyId body = world.shape_body(shape);
+    if (world.body_type(body) != BodyType::dynamic) continue;
     dragged_ = body;
-    grab_local_ = world_.pose(body).apply_inverse(cursor_);
-    world_.set_awake(body, true);
+    grab_local_ = world.pose(body).apply_inverse(cursor_);
+    world.set_awake(body, true);
     return;
   }
   drop_hull(cursor_);
@@ -145,36 +147,39 @@ void Sandbox::drop_hull(const Vec2& world_point) {
   Vec2 mean(0, 0);
   for (const Vec2& p : shape.points) mean += p / static_cast<Real>(shape.points.size());
   for (Vec2& p : shape.points) p -= mean;
-  const BodyId id = world_.create_body(body);
-  world_.create_shape(id, shape);
+  World& world = run_.world();
+  const BodyId id = world.create_body(body);
+  world.create_shape(id, shape);
 }
 
 void Sandbox::step() {
-  if (dragged_ && world_.is_valid(*dragged_)) {
+  World& world = run_.world();
+  if (dragged_ && world.is_valid(*dragged_)) {
     // Kinematic drag through the World API: each step, the grabbed point is given the
     // velocity that moves it towards the cursor; spin is damped so the body does not whirl.
     const BodyId body = *dragged_;
-    const Vec2 grabbed = world_.pose(body).apply(grab_local_);
+    const Vec2 grabbed = world.pose(body).apply(grab_local_);
     Vec2 velocity = kDragRate * (cursor_ - grabbed);
     if (velocity.norm() > kDragMaxSpeed) velocity *= kDragMaxSpeed / velocity.norm();
-    world_.set_linear_velocity(body, velocity);
-    world_.set_angular_velocity(body, 0.9 * world_.angular_velocity(body));
-    world_.set_awake(body, true);
+    world.set_linear_velocity(body, velocity);
+    world.set_angular_velocity(body, 0.9 * world.angular_velocity(body));
+    world.set_awake(body, true);
   }
-  world_.step();
+  run_.step();
 }
 
 void Sandbox::frame() {
   if (!paused_ || step_once_) step();
   step_once_ = false;
+  const World& world = run_.world();
   renderer_.begin_frame(background);
-  world_.draw(renderer_);
+  world.draw(renderer_);
   char line[200];
   std::snprintf(
       line, sizeof line,
       "scene %s%s\nstep %llu  time %.2f s\nbodies %zu  contacts %zu\nlayers:", scene_.c_str(),
-      paused_ ? "  [paused]" : "", static_cast<unsigned long long>(world_.step_count()),
-      world_.time(), world_.body_count(), world_.counters().touching_contacts);
+      paused_ ? "  [paused]" : "", static_cast<unsigned long long>(world.step_count()),
+      world.time(), world.body_count(), world.counters().touching_contacts);
   std::string text = line;
   for (const LayerKey& layer : kLayerKeys) {
     if (renderer_.layers & layer.layer) text.append(" ").append(layer.name);

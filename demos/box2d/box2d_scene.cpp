@@ -29,7 +29,7 @@ Box2dScene build_box2d_world(const SceneDef& scene) {
       }
     }
   }
-  // Joints: only what the comparison's scenes need (the tumbler's motor) is translated.
+  // Joints: only what the comparison's scenes need (tumbler_400's motor) is translated.
   for (std::size_t i = 0; i < scene.joints.size(); ++i) {
     const auto* revolute = std::get_if<RevoluteJointDef>(&scene.joints[i].def);
     if (revolute == nullptr || revolute->spring.enabled) {
