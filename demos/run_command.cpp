@@ -18,6 +18,7 @@
 #include "event_log.hpp"
 #include "exit_codes.hpp"
 #include "mink/engine/scene_file.hpp"
+#include "mink/engine/scene_schedule.hpp"
 #include "mink/error.hpp"
 #include "mink/render/frame_sink.hpp"
 #include "mink/render/gl_context.hpp"
@@ -30,7 +31,7 @@ namespace mink::cli {
 namespace {
 
 struct RunOptions {
-  std::string scene = "tumbler";
+  std::string scene = "tumbler_400";
   std::optional<long long> steps;
   std::optional<double> seconds;
   std::string out = "out";
@@ -107,10 +108,10 @@ int run_scene(const RunOptions& options, Streams streams) {
                       std::string_view(setting).substr(equals + 1));
   }
   scene.world.worker_count = options.threads;
-  World world = build_world(scene);
-  // A fresh world's slot order is the scene's order: body i of the scene is bodies[i].
-  const std::vector<BodyId> bodies = world.bodies();
-  const std::vector<JointId> joints = world.joints();  // likewise joint i of the scene
+  SceneRun run(scene);  // the scene's schedule, if any, runs before each step
+  World& world = run.world();
+  const std::vector<BodyId>& bodies = run.ids().bodies;   // body i of the scene is bodies[i]
+  const std::vector<JointId>& joints = run.ids().joints;  // likewise joint i
   const Real dt = scene.world.time_step;
   long long steps = 600;
   if (options.steps) steps = *options.steps;
@@ -179,7 +180,7 @@ int run_scene(const RunOptions& options, Streams streams) {
   char line[256];
   for (long long i = 1; i <= steps; ++i) {
     const auto before = std::chrono::steady_clock::now();
-    world.step();
+    run.step();
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - before)
             .count();

@@ -195,7 +195,7 @@ void WorldState::solve_continuous() {
       for (const std::uint32_t index : found)
         sweep_pair(fast, index, body_sweep(shapes[index].body));
       // Other fast bodies (a bullet has met every dynamic shape already).
-      if (fast.bullet) continue;
+      if (fast.bullet || !def.continuous_fast_pairs) continue;
       for (const std::uint32_t j : continuous.fast_by_x) {
         const FastBody& other = continuous.fast[j];
         if (other.box.lower.x() > fast.box.upper.x()) break;

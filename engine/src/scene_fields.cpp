@@ -548,6 +548,9 @@ constexpr SceneField<WorldDef> kWorldFields[] = {
     field<&WorldDef::enable_continuous>(
         "enable_continuous", FieldKind::boolean,
         "sweep fast bodies and stop them at their first touch (continuous collision)"),
+    field<&WorldDef::continuous_fast_pairs>(
+        "continuous_fast_pairs", FieldKind::boolean,
+        "sweep fast bodies against each other too, not only bullets (false: as Box2D v3)"),
     field<&WorldDef::contact_push_max_velocity>(
         "contact_push_max_velocity", FieldKind::real,
         "fastest speed (m/s) at which overlap is pushed apart", kNonNegative),

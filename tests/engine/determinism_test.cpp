@@ -56,10 +56,10 @@ TEST(Determinism, LargeStackSimdMatchesScalarTwin) {
   EXPECT_EQ(test::state_hash(wide), test::state_hash(scalar));
 }
 
-// Lanes sharing a kinematic body (the tumbler's drum, made kinematic again, touches many boxes
+// Lanes sharing a kinematic body (tumbler_400's drum, made kinematic again, touches many boxes
 // in one colour) leave its velocity alone: still bitwise equal to the twin.
 TEST(Determinism, KinematicSharedAcrossLanesMatchesScalarTwin) {
-  SceneDef scene = builtin_scene("tumbler");
+  SceneDef scene = builtin_scene("tumbler_400");
   ASSERT_EQ(scene.joints.size(), 1u);
   BodyDef& drum = scene.bodies[scene.joints[0].body_b].body;
   drum.type = BodyType::kinematic;

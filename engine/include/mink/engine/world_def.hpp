@@ -40,6 +40,9 @@ struct WorldDef {
   /// collision): against static and kinematic shapes, bullets against everything, and fast
   /// bodies against each other. false: speculative contacts only.
   bool enable_continuous = true;
+  /// Sweep fast bodies against each other too, not only bullets (Box2D v3 and Rapier sweep
+  /// non-bullets against static and kinematic shapes only: false matches them).
+  bool continuous_fast_pairs = true;
   /// Fastest speed at which overlap is pushed apart, so deep overlap resolves without popping.
   Real contact_push_max_velocity = 3;
   /// Approach speeds below this do not bounce, whatever the restitution.
