@@ -55,9 +55,8 @@ const std::vector<Box2dV3Run>& box2d_v3_runs() {
        {0, 0, 0, 1052, 4141, 7481, 8599, 8418, 7898, 7955, 8191, 8342, 7830, 8085, 8287, 8106,
         7842, 7942, 8029, 8336}, 250, ""},
       {"smash", 9601, 9601, 0, {0, 15771, 16141, 4280, 2559, 1893}, 100,
-       "the block bounces back off the wall of boxes made asleep (40 m/s to -8 m/s in the step "
-       "it reaches them) and the few boxes it wakes fall asleep again within steps; with "
-       "sleeping off it smashes through"},
+       "the block smashes through the wall of sleeping boxes as in Box2D v3, but over the first "
+       "100 steps ours keeps 9% more contacts touching (3.7% more over its 300 steps)"},
       {"spinner", 6078, 6437, 1,
        {13914, 13261, 14009, 15037, 15666, 15993, 15635, 15958, 16445, 16116}, 100, ""},
       {"tumbler", 2027, 2029, 1,
