@@ -27,15 +27,15 @@ demo: deps-test
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(CMAKE_FLAGS)
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target mink
 	mkdir -p out/frames
-	$(BUILD_DIR)/bin/mink run tumbler --seconds 10 --video out/demo.mp4 --stats out/stats.csv \
+	$(BUILD_DIR)/bin/mink run tumbler_400 --seconds 10 --video out/demo.mp4 --stats out/stats.csv \
 	  --save out/final.json --out out
 	ffmpeg -loglevel error -y -i out/demo.mp4 -vf "select=not(mod(n\\,60))" -vsync vfr \
 	  out/frames/frame_%02d.png
 	$(BUILD_DIR)/bin/mink paper --out out/paper
-	$(BUILD_DIR)/bin/mink compare tumbler --steps 600 --out out/compare
+	$(BUILD_DIR)/bin/mink compare tumbler_400 --steps 600 --out out/compare
 	@echo
 	@echo "Demo outputs:"
-	@echo "  video         out/demo.mp4 (tumbler, 10 s)"
+	@echo "  video         out/demo.mp4 (tumbler_400, 10 s)"
 	@echo "  frames        out/frames/frame_*.png (every 2 s of the video)"
 	@echo "  statistics    out/stats.csv (one row per step)"
 	@echo "  final state   out/final.json (resume: mink run out/final.json)"

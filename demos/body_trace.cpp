@@ -28,6 +28,7 @@ void BodyTrace::write_step(const World& world) {
   char row[256];
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     const BodyId body = bodies_[i];
+    if (!world.is_valid(body)) continue;  // destroyed during the run by the scene's schedule
     const Vec2 p = world.position(body);
     // The world keeps the centre of mass's velocity; the origin's differs when spinning.
     const Real w = world.angular_velocity(body);

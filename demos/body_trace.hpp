@@ -15,6 +15,8 @@ namespace mink::cli {
 // `every`-th step after it. `body` is the index in the scene's bodies array, (x, y) the body
 // origin, (vx, vy) the velocity of that origin (as in scene files, so vx is dx/dt), angle and
 // w in radians and radians per second. Numbers have 17 significant digits: they round-trip.
+// A body destroyed during the run (by the scene's schedule) has no rows after it is gone;
+// bodies the schedule creates are not traced.
 class BodyTrace {
  public:
   // `bodies[i]` is body i of the scene. Throws OutputError when `path` cannot be written.

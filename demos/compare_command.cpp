@@ -154,6 +154,12 @@ void report_trajectories(const TrajectoryRecorder& t, const CompareOptions& opti
 int run_compare(const CompareOptions& options, Streams streams) {
   const GlBackend backend = parse_gl_backend(options.gl);
   const SceneDef scene = resolve_scene(options.scene);
+  if (scene.schedule) {
+    // Its actions act on our world only: Box2D 2.4.1 would run another scene.
+    throw InvalidArgumentError("scene '" + options.scene +
+                               "' changes as it runs (its schedule creates, destroys or steers "
+                               "bodies), which Box2D 2.4.1 cannot follow");
+  }
   const bool trajectories = options.trajectories || !scene.joints.empty();
   TrajectoryRecorder recorder(scene);
   CompareObserver observe;

@@ -65,6 +65,7 @@ struct ContactComparison {
 // taken relative to the first shape's origin before rounding to float, so Box2D sees the same
 // geometry to about 1e-7 of the shapes' size. A disagreement is outside the band when our
 // distance to touching exceeds `band`. Throws InvalidArgumentError for a hull Box2D cannot hold.
+// The scene's schedule is not run: Box2D could not follow it (`mink compare` refuses such scenes).
 ContactComparison compare_contacts(const SceneDef& scene, long long steps, int every, double band,
                                    const Box2dStepping& stepping = {},
                                    const CompareObserver& observe = {});

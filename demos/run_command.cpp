@@ -18,6 +18,7 @@
 #include "event_log.hpp"
 #include "exit_codes.hpp"
 #include "mink/engine/scene_file.hpp"
+#include "mink/engine/scene_schedule.hpp"
 #include "mink/error.hpp"
 #include "mink/render/frame_sink.hpp"
 #include "mink/render/gl_context.hpp"
@@ -30,7 +31,7 @@ namespace mink::cli {
 namespace {
 
 struct RunOptions {
-  std::string scene = "tumbler";
+  std::string scene = "tumbler_400";
   std::optional<long long> steps;
   std::optional<double> seconds;
   std::string out = "out";
@@ -98,18 +99,19 @@ int run_scene(const RunOptions& options, Streams streams) {
   for (const std::string& setting : options.world_settings) {
     const std::size_t equals = setting.find('=');
     if (equals == std::string::npos || equals == 0) {
-      throw InvalidArgumentError("--world takes KEY=VALUE (a key of the scene file's world "
-                                 "object), got '" +
-                                 setting + "'");
+      throw InvalidArgumentError(
+          "--world takes KEY=VALUE (a key of the scene file's world "
+          "object), got '" +
+          setting + "'");
     }
     set_world_setting(scene.world, std::string_view(setting).substr(0, equals),
                       std::string_view(setting).substr(equals + 1));
   }
   scene.world.worker_count = options.threads;
-  World world = build_world(scene);
-  // A fresh world's slot order is the scene's order: body i of the scene is bodies[i].
-  const std::vector<BodyId> bodies = world.bodies();
-  const std::vector<JointId> joints = world.joints();  // likewise joint i of the scene
+  SceneRun run(scene);  // the scene's schedule, if any, runs before each step
+  World& world = run.world();
+  const std::vector<BodyId>& bodies = run.ids().bodies;   // body i of the scene is bodies[i]
+  const std::vector<JointId>& joints = run.ids().joints;  // likewise joint i
   const Real dt = scene.world.time_step;
   long long steps = 600;
   if (options.steps) steps = *options.steps;
@@ -146,7 +148,7 @@ int run_scene(const RunOptions& options, Streams streams) {
   if (!options.stats.empty()) {
     stats = open_output_file(options.stats, "--stats file");
     stats << "step,time,bodies,awake,pairs,contacts,kinetic_energy,step_ms,pairs_ms,collide_ms,"
-             "islands_ms,prepare_ms,solve_ms,finish_ms\n";
+             "islands_ms,prepare_ms,solve_ms,continuous_ms,finish_ms\n";
   }
   std::optional<BodyTrace> trace;
   if (!options.trace.empty()) {
@@ -178,7 +180,7 @@ int run_scene(const RunOptions& options, Streams streams) {
   char line[256];
   for (long long i = 1; i <= steps; ++i) {
     const auto before = std::chrono::steady_clock::now();
-    world.step();
+    run.step();
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - before)
             .count();
@@ -188,11 +190,11 @@ int run_scene(const RunOptions& options, Streams streams) {
     if (stats.is_open()) {
       const StepProfile& p = world.profile();
       std::snprintf(line, sizeof line,
-                    "%llu,%.17g,%zu,%zu,%zu,%zu,%.17g,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n",
+                    "%llu,%.17g,%zu,%zu,%zu,%zu,%.17g,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n",
                     static_cast<unsigned long long>(world.step_count()), world.time(),
                     world.body_count(), c.awake_bodies, c.broadphase_pairs, c.touching_contacts,
                     kinetic_energy(world), ms, p.pairs, p.collide, p.islands, p.prepare, p.solve,
-                    p.finish);
+                    p.continuous, p.finish);
       stats << line;
     }
     if (trace) trace->write_step(world);
@@ -277,10 +279,11 @@ Action add_run_command(CLI::App& app, Streams streams) {
                    "workers the step runs on, this thread among them (default 1); the results "
                    "are bitwise the same at any count")
       ->check(CLI::Range(1, 256));
-  command->add_option("--world", options->world_settings,
-                      "a world setting as KEY=VALUE, keys and values as in the scene file's "
-                      "world object (e.g. --world substeps=4 --world enable_sleep=false); "
-                      "repeatable, applied in order over the scene's own")
+  command
+      ->add_option("--world", options->world_settings,
+                   "a world setting as KEY=VALUE, keys and values as in the scene file's "
+                   "world object (e.g. --world substeps=4 --world enable_sleep=false); "
+                   "repeatable, applied in order over the scene's own")
       ->allow_extra_args(false);  // one setting per --world: the scene may follow it
   return [options, streams] { return run_scene(*options, streams); };
 }

@@ -83,13 +83,13 @@ Sandbox::Sandbox(Renderer& renderer, const std::string& scene)
     : Sandbox(renderer, scene, resolve_scene(scene)) {}
 
 Sandbox::Sandbox(Renderer& renderer, std::string name, SceneDef scene)
-    : renderer_(renderer), scene_(std::move(name)), scene_def_(std::move(scene)) {
+    : renderer_(renderer), scene_(std::move(name)), scene_def_(std::move(scene)), run_(scene_def_) {
   renderer_.layers = draw_shapes | draw_contact_points | draw_joints;
   reset();
 }
 
 void Sandbox::reset() {
-  world_ = build_world(scene_def_);
+  run_ = SceneRun(scene_def_);
   // The old world's ids mean nothing in the new one.
   world_anchor_.reset();
   drag_.reset();
@@ -107,10 +107,10 @@ void Sandbox::fit_camera() {
     Vec2 lower(0, 0);
     Vec2 upper(0, 0);
     bool first = true;
-    for (const BodyId body : world_.bodies()) {
-      if (moving_only && world_.body_type(body) == BodyType::static_body) continue;
-      for (const ShapeId shape : world_.body_shapes(body)) {
-        const Aabb box = world_.shape_aabb(shape);
+    for (const BodyId body : run_.world().bodies()) {
+      if (moving_only && run_.world().body_type(body) == BodyType::static_body) continue;
+      for (const ShapeId shape : run_.world().body_shapes(body)) {
+        const Aabb box = run_.world().shape_aabb(shape);
         lower = first ? box.lower : lower.cwiseMin(box.lower);
         upper = first ? box.upper : upper.cwiseMax(box.upper);
         first = false;
@@ -170,8 +170,8 @@ void Sandbox::mouse_down(const Vec2& pixel) {
     return;
   }
   release();  // a press whose release the window never delivered
-  const std::optional<BodyId> body = body_at(world_, cursor_);
-  if (body && world_.body_type(*body) == BodyType::dynamic) {
+  const std::optional<BodyId> body = body_at(run_.world(), cursor_);
+  if (body && run_.world().body_type(*body) == BodyType::dynamic) {
     grab(*body);
   } else {
     drop_hull(cursor_);
@@ -191,7 +191,7 @@ BodyId Sandbox::world_anchor() {
   if (!world_anchor_) {
     BodyDef anchor;
     anchor.type = BodyType::static_body;
-    world_anchor_ = world_.create_body(anchor);
+    world_anchor_ = run_.world().create_body(anchor);
   }
   return *world_anchor_;
 }
@@ -201,29 +201,30 @@ void Sandbox::grab(BodyId body) {
   // had when grabbed and aiming the origin where that angle puts the grabbed point under the
   // cursor makes the grabbed point follow the cursor (rather than the centre), as a firm grip
   // would. The anchor sits at the origin unrotated, so offsets in its frame are world ones.
-  const Pose pose = world_.pose(body);
-  const Real mass = world_.mass(body);
-  const Real gravity = world_.def().gravity.norm();
+  const Pose pose = run_.world().pose(body);
+  const Real mass = run_.world().mass(body);
+  const Real gravity = run_.world().def().gravity.norm();
   MotorJointDef def;
   def.body_a = world_anchor();
   def.body_b = body;
   def.linear_offset = pose.position;
-  def.angular_offset = world_.angle(body);
+  def.angular_offset = run_.world().angle(body);
   def.max_force = kDragLift * (gravity > 0 ? gravity : kUnitGravity) *
-                  std::min(mass, kHeavyBodies * typical_mass(world_));
+                  std::min(mass, kHeavyBodies * typical_mass(run_.world()));
   // The same bound on the acceleration of a point at the body's radius of gyration.
-  def.max_torque = def.max_force * std::sqrt(world_.rotational_inertia(body) / mass);
-  drag_ = Drag{body, world_.create_joint(def), pose.apply_inverse(cursor_), def.angular_offset};
+  def.max_torque = def.max_force * std::sqrt(run_.world().rotational_inertia(body) / mass);
+  drag_ =
+      Drag{body, run_.world().create_joint(def), pose.apply_inverse(cursor_), def.angular_offset};
 }
 
 void Sandbox::release() {
   if (!drag_) return;
-  if (world_.is_valid(drag_->joint)) world_.destroy_joint(drag_->joint);
+  if (run_.world().is_valid(drag_->joint)) run_.world().destroy_joint(drag_->joint);
   drag_.reset();
 }
 
 void Sandbox::pick_joint_body(const Vec2& world_point) {
-  const std::optional<BodyId> hit = body_at(world_, world_point);
+  const std::optional<BodyId> hit = body_at(run_.world(), world_point);
   const BodyId body = hit ? *hit : world_anchor();
   if (!joint_first_) {
     joint_first_ = body;
@@ -234,11 +235,11 @@ void Sandbox::pick_joint_body(const Vec2& world_point) {
   joint_first_.reset();
   if (first == body) {
     joint_message_ = "A and B are the same body: no joint";
-  } else if (world_.body_type(first) != BodyType::dynamic &&
-             world_.body_type(body) != BodyType::dynamic) {
+  } else if (run_.world().body_type(first) != BodyType::dynamic &&
+             run_.world().body_type(body) != BodyType::dynamic) {
     joint_message_ = "neither A nor B moves: no joint";
   } else {
-    world_.create_joint(revolute_joint_at(world_, first, body, world_point));
+    run_.world().create_joint(revolute_joint_at(run_.world(), first, body, world_point));
     joint_message_ = "revolute joint made";
   }
 }
@@ -255,31 +256,32 @@ void Sandbox::drop_hull(const Vec2& world_point) {
   Vec2 mean(0, 0);
   for (const Vec2& p : shape.points) mean += p / static_cast<Real>(shape.points.size());
   for (Vec2& p : shape.points) p -= mean;
-  const BodyId id = world_.create_body(body);
-  world_.create_shape(id, shape);
+  const BodyId id = run_.world().create_body(body);
+  run_.world().create_shape(id, shape);
 }
 
 void Sandbox::step() {
-  if (drag_ && world_.is_valid(drag_->joint)) {
+  if (drag_ && run_.world().is_valid(drag_->joint)) {
     const Vec2 origin = cursor_ - Rotation::from_angle(drag_->angle).apply(drag_->grab_local);
-    world_.set_motor_target(drag_->joint, origin, drag_->angle);
+    run_.world().set_motor_target(drag_->joint, origin, drag_->angle);
     // A body resting at the target would fall asleep and not notice the cursor move on.
-    world_.set_awake(drag_->body, true);
+    run_.world().set_awake(drag_->body, true);
   }
-  world_.step();
+  run_.step();
 }
 
 void Sandbox::frame() {
   if (!paused_ || step_once_) step();
   step_once_ = false;
   renderer_.begin_frame(background);
-  world_.draw(renderer_);
+  run_.world().draw(renderer_);
   char line[200];
   std::snprintf(line, sizeof line,
                 "scene %s%s\nstep %llu  time %.2f s\nbodies %zu  contacts %zu  joints %zu\nlayers:",
                 scene_.c_str(), paused_ ? "  [paused]" : "",
-                static_cast<unsigned long long>(world_.step_count()), world_.time(),
-                world_.body_count(), world_.counters().touching_contacts, world_.joint_count());
+                static_cast<unsigned long long>(run_.world().step_count()), run_.world().time(),
+                run_.world().body_count(), run_.world().counters().touching_contacts,
+                run_.world().joint_count());
   std::string text = line;
   for (const LayerKey& layer : kLayerKeys) {
     if (renderer_.layers & layer.layer) text.append(" ").append(layer.name);

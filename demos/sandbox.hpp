@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "mink/engine/scene.hpp"
+#include "mink/engine/scene_schedule.hpp"
 #include "mink/engine/world.hpp"
 #include "mink/render/renderer.hpp"
 
@@ -41,7 +42,7 @@ class Sandbox {
   bool quit_requested() const { return quit_; }
   bool paused() const { return paused_; }
   const std::string& scene() const { return scene_; }
-  const World& world() const { return world_; }
+  const World& world() const { return run_.world(); }
   std::uint32_t layers() const { return renderer_.layers; }
   // The body being dragged, if any, and the motor joint that drags it.
   std::optional<BodyId> dragged() const;
@@ -68,7 +69,7 @@ class Sandbox {
   Renderer& renderer_;
   std::string scene_;
   SceneDef scene_def_;  // what reset rebuilds, so a scene file is read once
-  World world_;
+  SceneRun run_;        // the world, stepped with the scene's schedule
   bool paused_ = false;
   bool step_once_ = false;
   bool quit_ = false;

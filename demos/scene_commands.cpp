@@ -18,7 +18,9 @@ Action add_scenes_command(CLI::App& app, Streams streams) {
   app.add_subcommand("scenes", "List the built-in scenes (each with its body count).");
   return [streams] {
     for (std::string_view name : builtin_scene_names()) {
-      streams.out << name << " (" << builtin_scene(name).bodies.size() << " bodies)\n";
+      const SceneDef scene = builtin_scene(name);
+      streams.out << name << " (" << scene.bodies.size() << " bodies"
+                  << (scene.schedule ? "; changes as it runs" : "") << ")\n";
     }
     return static_cast<int>(kSuccess);
   };
@@ -33,6 +35,10 @@ Action add_export_scene_command(CLI::App& app, Streams streams) {
   command->add_option("--out", *out, "file to write (default: standard output)");
   return [name, out, streams] {
     const SceneDef scene = builtin_scene(*name);
+    if (scene.schedule) {
+      streams.err << "note: scene '" << *name
+                  << "' changes as it runs; a scene file holds its initial state only\n";
+    }
     if (out->empty()) {
       streams.out << scene_to_json(scene);
     } else {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -30,6 +31,8 @@ void check_body_def(const BodyDef& def) {
   require(std::isfinite(def.angular_damping) && def.angular_damping >= 0,
           "BodyDef.angular_damping must be finite and non-negative");
   require(std::isfinite(def.gravity_scale), "BodyDef.gravity_scale must be finite");
+  require(!std::isnan(def.continuous_threshold) && def.continuous_threshold >= 0,
+          "BodyDef.continuous_threshold must be non-negative");
 }
 
 }  // namespace
@@ -106,9 +109,14 @@ void WorldState::update_mass(Body& b) {
     if (b.fixed_rotation) b.inertia = 0;
     b.inv_inertia = b.inertia > 0 ? 1 / b.inertia : 0;
   }
+  // Segments have no width: they count only when the body has nothing else.
+  b.min_extent = std::numeric_limits<Real>::infinity();
   for (std::uint32_t s : b.shapes) {
     b.extent = std::max(b.extent, detail::shape_extent(shapes[s].geometry, b.local_center));
+    const Real thin = detail::shape_min_extent(shapes[s].geometry);
+    if (thin > 0) b.min_extent = std::min(b.min_extent, thin);
   }
+  if (!std::isfinite(b.min_extent)) b.min_extent = def.linear_slop;
   const Vec2 old_center = b.center;
   b.center = b.origin + b.rotation.apply(b.local_center);
   // Material points keep their velocity when the centre moves within the body.
@@ -139,6 +147,7 @@ BodyId World::create_body(const BodyDef& def) {
   b.enabled = def.enabled;
   b.fixed_rotation = def.fixed_rotation;
   b.bullet = def.bullet;
+  b.continuous_threshold = def.continuous_threshold;
   // A body that may not sleep starts awake (as in Box2D), whatever `awake` says.
   if (def.type != BodyType::static_body && !def.allow_sleep) b.awake = true;
   if (b.awake) w.add_to_awake_list(b);
@@ -222,6 +231,9 @@ bool World::fixed_rotation(BodyId id) const {
 }
 bool World::is_bullet(BodyId id) const {
   return state_->body(id).bullet;
+}
+Real World::continuous_threshold(BodyId id) const {
+  return state_->body(id).continuous_threshold;
 }
 
 MassData World::mass_data(BodyId id) const {
@@ -397,6 +409,12 @@ void World::set_fixed_rotation(BodyId id, bool fixed) {
 
 void World::set_bullet(BodyId id, bool bullet) {
   state_->body(id).bullet = bullet;
+}
+
+void World::set_continuous_threshold(BodyId id, Real threshold) {
+  require(!std::isnan(threshold) && threshold >= 0,
+          "continuous_threshold must be non-negative, got " + std::to_string(threshold));
+  state_->body(id).continuous_threshold = threshold;
 }
 
 void World::set_target_transform(BodyId id, const Vec2& position, Real angle, Real time_step) {

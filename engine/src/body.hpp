@@ -28,6 +28,8 @@ struct alignas(64) Body {
   bool fixed_rotation = false;
   bool bullet = false;
   bool mass_override = false;  // set_mass_data's values stand until the shapes change
+  Real min_extent = 0;         // thinnest shape's half-width: continuous collision's yardstick
+  Real continuous_threshold = 0.5;
   MassData override_mass;
 
   Vec2 local_center{0, 0};

@@ -75,6 +75,7 @@ void integrate_positions(std::span<SolverBody> bodies, Real h) {
     body.dpy += h * body.vy;
     // q += h * w * perp(q), renormalised: exact direction, a cheap stand-in for sin/cos.
     const Real hw = h * body.w;
+    body.turn += hw;
     const Real qc = body.qc - hw * body.qs;
     const Real qs = body.qs + hw * body.qc;
     const Real inv_length = 1 / std::sqrt(qc * qc + qs * qs);

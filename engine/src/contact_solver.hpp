@@ -17,7 +17,9 @@ struct SolverBody {
   Real vx = 0, vy = 0, w = 0;
   Real dpx = 0, dpy = 0;
   Real qc = 1, qs = 0;  // rotation since the step began
-  Real pad = 0;
+  // The angle turned since the step began, summed over the substeps: tells how many whole
+  // turns (qc, qs) has made, for continuous collision's sweep.
+  Real turn = 0;
 };
 
 // What building constraints needs of a moving body, compactly.
@@ -146,7 +148,7 @@ class ContactSolver {
   };
   std::vector<WorkerFindings> findings_;
   struct Stage;
-  std::vector<Stage> stages_;               // one substep's stages
+  std::vector<Stage> stages_;                // one substep's stages
   std::vector<std::uint32_t> stage_blocks_;  // blocks per stage, every substep
   StageRunner stage_runner_;
 };

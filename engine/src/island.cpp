@@ -9,7 +9,7 @@ namespace mink {
 using detail::Body;
 using detail::Contact;
 
-// Islands are found from the awake bodies only: a walk over touching contacts and joints
+// Islands are found from the awake bodies only: a walk over contacts with points and joints
 // between dynamic bodies gathers each island that holds an awake body (sleeping members included,
 // so that they wake with it), and an island of sleeping bodies is never visited: it costs nothing.
 // An island sleeps when all its bodies have been slow for time_to_sleep, and wakes as a whole when
@@ -54,9 +54,11 @@ void WorldState::update_islands() {
         island_stamp[j] = step_count;
         island_stack.push_back(j);
       };
+      // Contacts with points link bodies, speculative ones included: a body closing on a
+      // sleeping one wakes it before they meet, rather than meeting it as if it were static.
       for (const std::uint32_t ci : b.contacts) {
         const Contact& c = contacts[ci];
-        if (c.touching) reach(c.body_a == i ? c.body_b : c.body_a);
+        if (c.manifold.point_count > 0) reach(c.body_a == i ? c.body_b : c.body_a);
       }
       for (const std::uint32_t ji : b.joints) {
         const detail::Joint& joint = joints[ji];

@@ -5,15 +5,22 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <string>
-#include <type_traits>
 #include <variant>
 
+#include "benchmark_scenes.hpp"
+#include "human.hpp"
 #include "mink/error.hpp"
 #include "mink/geometry/point_sets.hpp"
+#include "scene_building.hpp"
 
 namespace mink {
+
+using detail::add_body;
+using detail::add_joint;
+using detail::static_box;
 
 Pose scene_body_pose(const SceneDef& scene, std::size_t index) {
   if (index >= scene.bodies.size()) {
@@ -61,9 +68,9 @@ JointDef joint_in_world(const SceneJoint& joint, std::size_t index, std::span<co
 
 }  // namespace
 
-World build_world(const SceneDef& scene) {
-  World world(scene.world);
-  std::vector<BodyId> bodies;
+SceneIds add_scene(World& world, const SceneDef& scene) {
+  SceneIds ids;
+  std::vector<BodyId>& bodies = ids.bodies;
   for (const SceneBody& body : scene.bodies) {
     const BodyId id = world.create_body(body.body);
     bodies.push_back(id);
@@ -75,7 +82,7 @@ World build_world(const SceneDef& scene) {
       }
     }
   }
-  std::vector<JointId> joints;
+  std::vector<JointId>& joints = ids.joints;
   for (std::size_t i = 0; i < scene.joints.size(); ++i) {
     const JointDef def = joint_in_world(scene.joints[i], i, bodies, joints);
     try {
@@ -88,6 +95,12 @@ World build_world(const SceneDef& scene) {
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (!scene.bodies[i].body.awake) world.set_awake(bodies[i], false);
   }
+  return ids;
+}
+
+World build_world(const SceneDef& scene) {
+  World world(scene.world);
+  add_scene(world, scene);
   return world;
 }
 
@@ -214,6 +227,7 @@ SceneDef capture_scene(const World& world) {
     def.enabled = world.is_enabled(id);
     def.fixed_rotation = world.fixed_rotation(id);
     def.bullet = world.is_bullet(id);
+    def.continuous_threshold = world.continuous_threshold(id);
     def.user_data = world.user_data(id);
     body.shapes = captured_shapes(world, id);
     scene.bodies.push_back(std::move(body));
@@ -223,14 +237,6 @@ SceneDef capture_scene(const World& world) {
 }
 
 namespace {
-
-SceneBody static_box(const Vec2& center, Real hx, Real hy) {
-  SceneBody ground;
-  ground.body.type = BodyType::static_body;
-  ground.body.position = center;
-  ground.shapes.push_back(ShapeDef::box(hx, hy));
-  return ground;
-}
 
 // SplitMix64: a tiny generator whose output is the same everywhere (scenes are data that
 // must not depend on the standard library's distributions).
@@ -338,40 +344,9 @@ SceneDef rain_scene(int body_count, std::uint64_t seed, RainShapes kinds) {
 
 namespace {
 
-// Appends a body with these shapes; returns its index.
-std::size_t add_body(SceneDef& scene, BodyType type, const Vec2& position,
-                     std::vector<ShapeDef> shapes, Real angle = 0) {
-  SceneBody body;
-  body.body.type = type;
-  body.body.position = position;
-  body.body.angle = angle;
-  body.shapes = std::move(shapes);
-  scene.bodies.push_back(std::move(body));
-  return scene.bodies.size() - 1;
-}
-
-// Appends a joint of `def`'s kind between bodies a and b of the scene at world points (one
-// point twice for kinds with one anchor), holding the bodies as they are defined.
-template <class Def>
-SceneJoint& add_joint(SceneDef& scene, std::size_t a, std::size_t b, const Vec2& anchor_a,
-                      const Vec2& anchor_b, Def def = {}) {
-  def.local_anchor_a = scene_body_pose(scene, a).apply_inverse(anchor_a);
-  def.local_anchor_b = scene_body_pose(scene, b).apply_inverse(anchor_b);
-  if constexpr (requires { def.reference_angle; }) {
-    def.reference_angle = scene.bodies[b].body.angle - scene.bodies[a].body.angle;
-  }
-  if constexpr (std::is_same_v<Def, DistanceJointDef>) def.length = (anchor_b - anchor_a).norm();
-  SceneJoint joint;
-  joint.def = def;
-  joint.body_a = a;
-  joint.body_b = b;
-  scene.joints.push_back(std::move(joint));
-  return scene.joints.back();
-}
-
-// A drum of boxes turned by a revolute motor about a static hub: the drum is dynamic, so the
-// boxes' weight loads the motor, which has torque to spare.
-SceneDef tumbler_scene() {
+// A drum of 400 boxes turned by a revolute motor about a static hub: the drum is dynamic, so
+// the boxes' weight loads the motor, which has torque to spare.
+SceneDef tumbler_400_scene() {
   SceneDef scene;
   const std::size_t hub = add_body(scene, BodyType::static_body, Vec2(0, 10), {});
   const Real half = 10, wall = 0.5;
@@ -477,66 +452,13 @@ SceneDef bridge_scene() {
   return scene;
 }
 
-// Box2D v3's human (shared/human.c) as data: capsules of a 1.8 m body whose feet are at the
-// origin, each pinned to its parent with a limited revolute joint, sprung towards standing
-// and with a weak motor at speed 0 as joint friction.
-struct Bone {
-  int parent;                // -1 for the hip
-  Real y;                    // the body's height
-  Real bottom, top, radius;  // the capsule, along the body's y axis
-  Real pivot;                // the joint's height
-  Real lower, upper;         // limits, in turns of pi
-  Real friction;             // share of the joint friction torque
-};
-constexpr std::array<Bone, 11> kHuman = {{
-    {-1, 0.95, -0.02, 0.02, 0.095, 0, 0, 0, 0},                 // hip
-    {0, 1.2, -0.135, 0.135, 0.09, 1.0, -0.25, 0, 0.5},          // torso
-    {1, 1.475, -0.038, 0.039, 0.075, 1.4, -0.3, 0.1, 0.25},     // head
-    {0, 0.775, -0.125, 0.125, 0.06, 0.9, -0.05, 0.4, 1},        // upper legs
-    {3, 0.475, -0.155, 0.125, 0.045, 0.625, -0.5, -0.02, 0.5},  // lower legs (with feet)
-    {0, 0.775, -0.125, 0.125, 0.06, 0.9, -0.05, 0.4, 1},
-    {5, 0.475, -0.155, 0.125, 0.045, 0.625, -0.5, -0.02, 0.5},
-    {1, 1.225, -0.125, 0.125, 0.035, 1.35, -0.1, 0.8, 0.5},  // upper arms
-    {7, 0.975, -0.125, 0.125, 0.03, 1.1, -0.2, 0.3, 0.1},    // lower arms
-    {1, 1.225, -0.125, 0.125, 0.035, 1.35, -0.1, 0.8, 0.5},
-    {9, 0.975, -0.125, 0.125, 0.03, 1.1, -0.2, 0.3, 0.1},
-}};
-
-// One ragdoll with its feet at `feet`; `group` (negative) keeps its parts from colliding.
-void add_ragdoll(SceneDef& scene, const Vec2& feet, std::int32_t group) {
-  const std::size_t first = scene.bodies.size();
-  for (const Bone& bone : kHuman) {
-    ShapeDef capsule = ShapeDef::capsule(Vec2(0, bone.bottom), Vec2(0, bone.top), bone.radius);
-    capsule.friction = 0.2;
-    capsule.filter.group = group;
-    std::vector<ShapeDef> shapes = {std::move(capsule)};
-    if (bone.parent == 3 || bone.parent == 5) {
-      ShapeDef foot;
-      foot.points = {{-0.03, -0.185}, {0.11, -0.185}, {0.11, -0.16}, {-0.03, -0.14}};
-      foot.radius = 0.015;
-      foot.friction = 0.05;
-      foot.filter.group = group;
-      shapes.push_back(std::move(foot));
-    }
-    const std::size_t body =
-        add_body(scene, BodyType::dynamic, feet + Vec2(0, bone.y), std::move(shapes));
-    if (bone.parent < 0) continue;
-    RevoluteJointDef def;
-    def.limit = {true, bone.lower * std::numbers::pi, bone.upper * std::numbers::pi};
-    def.motor = {true, 0, 0.05 * bone.friction};
-    def.spring = {true, 5, 0.5, 0};
-    const Vec2 pivot = feet + Vec2(0, bone.pivot);
-    add_joint(scene, first + static_cast<std::size_t>(bone.parent), body, pivot, pivot, def);
-  }
-}
-
 // Ragdolls standing in a row and more dropped on them.
 SceneDef ragdolls_scene() {
   SceneDef scene;
   scene.bodies.push_back(static_box(Vec2(0, -1), 20, 1));
   for (int i = 0; i < 12; ++i) {
     const Vec2 feet(-6 + 1.1 * (i % 6) + 0.4 * (i / 6), 3.0 * (i / 6));
-    add_ragdoll(scene, feet, -(i + 1));
+    detail::add_human(scene, feet, -(i + 1));
   }
   return scene;
 }
@@ -673,9 +595,12 @@ SceneDef shapes_scene() {
   return scene;
 }
 
-constexpr std::array<std::string_view, 13> kSceneNames = {
-    "large_pyramid", "pyramid", "many_pyramids", "rain",     "tumbler", "paper",         "shapes",
-    "pendulum",      "chain",   "bridge",        "ragdolls", "car",     "newtons_cradle"};
+// Ours, then Box2D v3's benchmark suite (benchmark_scenes.cpp).
+constexpr std::array<std::string_view, 23> kSceneNames = {
+    "pyramid",        "pyramid_100", "pyramid_grid", "rain_mixed", "tumbler_400",   "paper",
+    "shapes",         "pendulum",    "chain",        "bridge",     "ragdolls",      "car",
+    "newtons_cradle", "compounds",   "joint_grid",   "junkyard",   "large_pyramid", "many_pyramids",
+    "rain",           "smash",       "spinner",      "tumbler",    "washer"};
 
 }  // namespace
 
@@ -684,11 +609,11 @@ std::span<const std::string_view> builtin_scene_names() noexcept {
 }
 
 SceneDef builtin_scene(std::string_view name) {
-  if (name == "large_pyramid") return pyramid_scene(100);
   if (name == "pyramid") return pyramid_scene(20);
-  if (name == "many_pyramids") return many_pyramids_scene(20, 20, 10);
-  if (name == "rain") return rain_scene(300, 5, RainShapes::mixed);
-  if (name == "tumbler") return tumbler_scene();
+  if (name == "pyramid_100") return pyramid_scene(100);
+  if (name == "pyramid_grid") return many_pyramids_scene(20, 20, 10);
+  if (name == "rain_mixed") return rain_scene(300, 5, RainShapes::mixed);
+  if (name == "tumbler_400") return tumbler_400_scene();
   if (name == "paper") return paper_scene();
   if (name == "shapes") return shapes_scene();
   if (name == "pendulum") return pendulum_scene();
@@ -697,6 +622,7 @@ SceneDef builtin_scene(std::string_view name) {
   if (name == "ragdolls") return ragdolls_scene();
   if (name == "car") return car_scene();
   if (name == "newtons_cradle") return newtons_cradle_scene();
+  if (std::optional<SceneDef> scene = detail::benchmark_scene(name)) return std::move(*scene);
   throw InvalidArgumentError("unknown scene '" + std::string(name) + "'");
 }
 

@@ -545,6 +545,12 @@ constexpr SceneField<WorldDef> kWorldFields[] = {
                                        "joint passes per substep in the biased solve", {1, 1000}),
     field<&WorldDef::direct_joint_chains>("direct_joint_chains", FieldKind::boolean,
                                           "solve chains of revolute joints exactly as one system"),
+    field<&WorldDef::enable_continuous>(
+        "enable_continuous", FieldKind::boolean,
+        "sweep fast bodies and stop them at their first touch (continuous collision)"),
+    field<&WorldDef::continuous_fast_pairs>(
+        "continuous_fast_pairs", FieldKind::boolean,
+        "sweep fast bodies against each other too, not only bullets (false: as Box2D v3)"),
     field<&WorldDef::contact_push_max_velocity>(
         "contact_push_max_velocity", FieldKind::real,
         "fastest speed (m/s) at which overlap is pushed apart", kNonNegative),
@@ -594,6 +600,10 @@ constexpr SceneField<BodyDef> kBodyFields[] = {
     field<&BodyDef::fixed_rotation>("fixed_rotation", FieldKind::boolean, "true: never rotates"),
     field<&BodyDef::bullet>("bullet", FieldKind::boolean,
                             "continuous collision against dynamic bodies too"),
+    field<&BodyDef::continuous_threshold>(
+        "continuous_threshold", FieldKind::real,
+        "a step moving it farther than this fraction of its thinnest half-width is swept",
+        kNonNegative),
     field<&BodyDef::user_data>("user_data", FieldKind::user_data,
                                "handed back by World::user_data"),
 };

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "mink/error.hpp"
@@ -82,6 +83,25 @@ Real shape_extent(const ShapeGeometry& geometry, const Vec2& center) {
   for_each_core_point(geometry,
                       [&](const Vec2& p) { extent = std::max(extent, (p - center).norm()); });
   return extent + shape_radius(geometry);
+}
+
+Real shape_min_extent(const ShapeGeometry& geometry) {
+  struct Visitor {
+    Real operator()(const Circle& c) const { return c.radius; }
+    Real operator()(const Capsule& c) const { return c.radius; }
+    Real operator()(const Segment&) const { return 0; }
+    Real operator()(const ChainSegment&) const { return 0; }
+    Real operator()(const RoundedPolygon& p) const {
+      Real nearest = std::numeric_limits<Real>::infinity();
+      const auto normals = p.hull.normals();
+      const auto offsets = p.hull.face_offsets();
+      for (std::size_t i = 0; i < normals.size(); ++i) {
+        nearest = std::min(nearest, offsets[i] - normals[i].dot(p.hull.centroid()));
+      }
+      return std::max(nearest, Real{0}) + p.radius;
+    }
+  };
+  return std::visit(Visitor{}, geometry);
 }
 
 }  // namespace detail

@@ -43,4 +43,9 @@ Real shape_radius(const ShapeGeometry& geometry);
 // Largest distance from `center` (body frame) to a point of the shape, radius included.
 Real shape_extent(const ShapeGeometry& geometry, const Vec2& center);
 
+// How thin the shape is: half its smallest width, about (a polygon's distance from its
+// centroid to the nearest face, a round shape's radius; 0 for segments). A step that moves a
+// body by a good part of this could carry it through something: continuous collision's yardstick.
+Real shape_min_extent(const ShapeGeometry& geometry);
+
 }  // namespace mink::detail

@@ -176,8 +176,8 @@ void WorldState::clear_events() {
   joint_break_events.clear();
 }
 
-// One step: pair update -> narrowphase -> islands and sleep -> soft-step solver -> broadphase
-// boxes for the next step -> sensors.
+// One step: pair update -> narrowphase -> islands and sleep -> soft-step solver -> continuous
+// collision -> broadphase boxes for the next step -> sensors.
 void World::run_step(bool clear_events, Real time_step, int substeps) {
   WorldState& w = *state_;
   if (clear_events) w.clear_events();
@@ -205,10 +205,17 @@ void World::run_step(bool clear_events, Real time_step, int substeps) {
   w.solve();
   w.finish_joints();
   const auto t5 = Clock::now();
+  if (w.def.enable_continuous) {
+    w.solve_continuous();
+  } else {
+    w.continuous.fast.clear();
+    w.counters.fast_bodies = w.counters.continuous_hits = 0;
+  }
+  const auto t6 = Clock::now();
   w.finish_step();
   w.update_sensors();
-  const auto t6 = Clock::now();
-  w.profile = {ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t4, t5), ms(t5, t6)};
+  const auto t7 = Clock::now();
+  w.profile = {ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t4, t5), ms(t5, t6), ms(t6, t7)};
   w.time += time_step;
   ++w.step_count;
 }

@@ -1,6 +1,7 @@
 // Queries and debug drawing: broadphase candidates, then exact tests against the hulls.
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -8,6 +9,7 @@
 #include "mink/error.hpp"
 #include "mink/geometry/convex_hull.hpp"
 
+#include "mink/narrowphase/shape_cast.hpp"
 #include "world_state.hpp"
 
 namespace mink {
@@ -93,6 +95,44 @@ std::optional<ShapeRayHit> World::ray_cast(const Vec2& origin, const Vec2& trans
         if (hit && (!best || hit->fraction < best->hit.fraction ||
                     (hit->fraction == best->hit.fraction && index < best->shape.index))) {
           best = ShapeRayHit{w.shape_id(index), *hit};
+        }
+      });
+  return best;
+}
+
+std::optional<ShapeCastHit> World::cast_shape(const ShapeDef& def, const Pose& pose,
+                                              const Vec2& translation, const Filter& filter) const {
+  const WorldState& w = *state_;
+  if (!(pose.position.allFinite() && std::isfinite(pose.rotation.cos) &&
+        std::isfinite(pose.rotation.sin) && translation.allFinite())) {
+    throw InvalidArgumentError("cast_shape: the pose and translation must be finite");
+  }
+  const ShapeGeometry geometry = detail::make_geometry(def);
+  const Pose end{pose.position + translation, pose.rotation};
+  const Aabb start_box = compute_aabb(geometry, pose), end_box = compute_aabb(geometry, end);
+  const Aabb box{start_box.lower.cwiseMin(end_box.lower), start_box.upper.cwiseMax(end_box.upper)};
+  std::vector<ProxyId> proxies;
+  w.broadphase.query(box, proxies);
+  std::optional<ShapeCastHit> best;
+  for_each_candidate(
+      w, proxies, [&](std::uint32_t index, const ShapeGeometry& other, const Pose& other_pose) {
+        const detail::Shape& s = w.shapes[index];
+        if (s.sensor || !should_collide(filter, s.filter)) return;
+        ShapeCastInput input;
+        input.shape = &geometry;
+        input.pose = pose;
+        input.translation = translation;
+        input.obstacle = &other;
+        input.obstacle_pose = other_pose;
+        input.max_fraction = best ? best->fraction : 1;
+        input.target = slop_target(geometry, other, w.def.linear_slop);
+        input.tolerance = 0.25 * w.def.linear_slop;
+        const ShapeCastOutput out = shape_cast(input);
+        if (out.state == ToiState::separated) return;
+        // Ties go to the lower slot so the answer does not depend on broadphase order.
+        if (!best || out.fraction < best->fraction ||
+            (out.fraction == best->fraction && index < best->shape.index)) {
+          best = ShapeCastHit{w.shape_id(index), out.fraction, out.point, out.normal};
         }
       });
   return best;

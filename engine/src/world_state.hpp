@@ -8,6 +8,7 @@
 #include "constraint_graph.hpp"
 #include "contact.hpp"
 #include "contact_solver.hpp"
+#include "continuous.hpp"
 #include "id_pool.hpp"
 #include "joint.hpp"
 #include "joint_solver.hpp"
@@ -46,7 +47,7 @@ struct WorldState {
   // Bodies that may be awake (every awake body is here; stale entries are dropped once a
   // step): a step visits these and their contacts only, so a sleeping island costs nothing.
   std::vector<std::uint32_t> awake_list;
-  std::vector<std::uint32_t> step_contacts;  // contacts of moving bodies this step, in order
+  std::vector<std::uint32_t> step_contacts;   // contacts of moving bodies this step, in order
   std::vector<std::uint8_t> collide_changes;  // per step contact: what collide() must update
 
   std::vector<ContactBeginEvent> begin_events;
@@ -83,6 +84,7 @@ struct WorldState {
   std::vector<std::uint64_t> island_stamp;  // per body: the step whose island pass reached it
   std::vector<std::uint32_t> island_stack, island_members, woken;
   std::vector<ProxyId> query_scratch;
+  detail::ContinuousState continuous;
 
   detail::Body& body(BodyId id) { return bodies.get(id, serial, "body"); }
   const detail::Body& body(BodyId id) const { return const_cast<WorldState*>(this)->body(id); }
@@ -125,6 +127,8 @@ struct WorldState {
   void collide();
   // sensor.cpp
   void update_sensors();
+  bool crossed_in_step(const detail::Shape& sensor, const Pose& sensor_pose,
+                       const detail::FastBody& fast, const detail::Shape& visitor) const;
   void destroy_sensor(std::uint32_t shape_index);
   // island.cpp
   void update_islands();
@@ -148,6 +152,12 @@ struct WorldState {
   // Solver body `solver_index`'s velocity and pose back into its body record.
   void write_back(std::uint32_t solver_index);
   void finish_step();
+  // continuous.cpp (before finish_step: it needs the step's solver records)
+  void solve_continuous();
+  Sweep solver_sweep(std::uint32_t solver_index) const;
+  Sweep body_sweep(std::uint32_t body) const;
+  void sweep_pair(detail::FastBody& fast, std::uint32_t other_shape,
+                  const Sweep& other_sweep) const;
 };
 
 }  // namespace mink

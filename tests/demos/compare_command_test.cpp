@@ -338,4 +338,13 @@ TEST(CompareTrajectories, AJointlessSceneComparesTrajectoriesOnlyWhenAsked) {
   EXPECT_FALSE(std::filesystem::exists(dir / "joint_gaps.csv"));  // no revolute or weld joints
 }
 
+// rain drops and destroys ragdolls as it runs: Box2D 2.4.1 could not follow our world.
+TEST(CompareCommand, ASceneThatChangesAsItRunsIsRefused) {
+  const auto dir = fresh_dir("compare_schedule");
+  const CliResult r = run_cli({"compare", "rain", "--steps", "5", "--out", dir.string()});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("scene 'rain' changes as it runs"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "contacts.csv"));
+}
+
 }  // namespace

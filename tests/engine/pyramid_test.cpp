@@ -10,18 +10,8 @@
 namespace mink {
 namespace {
 
-struct Start {
-  BodyId id;
-  Vec2 position;
-};
-
-std::vector<Start> dynamic_bodies(const World& world) {
-  std::vector<Start> starts;
-  for (const BodyId id : world.bodies()) {
-    if (world.body_type(id) == BodyType::dynamic) starts.push_back({id, world.position(id)});
-  }
-  return starts;
-}
+using test::dynamic_bodies;
+using test::Start;
 
 const Start& top_box(const std::vector<Start>& starts) {
   return *std::max_element(starts.begin(), starts.end(), [](const Start& a, const Start& b) {
@@ -46,13 +36,13 @@ TEST(Pyramid, TwentyRowsStandAfterTenSeconds) {
   EXPECT_NEAR(world.position(top.id).y(), height, 0.01 * height);
 }
 
-// The benchmark scene: 5050 boxes, 500 steps with sleeping off; the top box stays within 0.3
-// of where it started. Heavy, so shrunk to a 40-box base under the sanitizers.
+// 5050 boxes at our default settings, 500 steps with sleeping off; the top box stays within
+// 0.3 of where it started. Heavy, so shrunk to a 40-box base under the sanitizers.
 TEST(Pyramid, LargePyramidStandsAfterFiveHundredSteps) {
 #ifdef MINK_SANITIZED_BUILD
   SceneDef scene = pyramid_scene(40);
 #else
-  SceneDef scene = builtin_scene("large_pyramid");
+  SceneDef scene = builtin_scene("pyramid_100");
 #endif
   scene.world.enable_sleep = false;
   World world = build_world(scene);
@@ -61,6 +51,27 @@ TEST(Pyramid, LargePyramidStandsAfterFiveHundredSteps) {
   for (int i = 0; i < 500; ++i) world.step();
   EXPECT_LT((world.position(top.id) - top.position).norm(), 0.3);
   EXPECT_GT(world.counters().touching_contacts, starts.size());
+}
+
+// Box2D v3's large_pyramid at its settings (30 Hz contacts, 4 substeps): soft contacts under
+// the load of 100 rows give, so its top box sinks by 0.73 m in Box2D v3 itself (0.0174,
+// 98.7678 after 500 steps of 1/60 s from (0, 99.5), measured with Box2D v3 617d32ab) and then
+// holds. Ours must stand as that one does: its top box within 0.3 of Box2D v3's, sideways as
+// well as down, and settled.
+TEST(Pyramid, Box2dV3LargePyramidStandsAsBox2dV3sDoes) {
+#ifdef MINK_SANITIZED_BUILD
+  GTEST_SKIP() << "5050 boxes for 500 steps: too slow under the sanitizers";
+#else
+  World world = build_world(builtin_scene("large_pyramid"));
+  const std::vector<Start> starts = dynamic_bodies(world);
+  const Start& top = top_box(starts);
+  for (int i = 0; i < 450; ++i) world.step();
+  const Vec2 before = world.position(top.id);
+  for (int i = 0; i < 50; ++i) world.step();
+  const Vec2 box2d_v3_top(0.0174, 98.7678);
+  EXPECT_LT((world.position(top.id) - box2d_v3_top).norm(), 0.3);
+  EXPECT_LT((world.position(top.id) - before).norm(), 0.02);  // no longer sinking
+#endif
 }
 
 }  // namespace

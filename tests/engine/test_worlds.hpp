@@ -1,9 +1,12 @@
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 #include "mink/engine/scene.hpp"
 #include "mink/engine/world.hpp"
@@ -41,6 +44,28 @@ inline constexpr int long_run(int steps, int sanitized_steps) {
   static_cast<void>(sanitized_steps);
   return steps;
 #endif
+}
+
+// Whether the built-in is one of Box2D v3's benchmark scenes (they have tests of their own).
+inline bool is_benchmark_scene(std::string_view name) {
+  const auto suite = benchmark_suite();
+  return std::any_of(suite.begin(), suite.end(),
+                     [&](const BenchmarkScene& scene) { return scene.name == name; });
+}
+
+// A dynamic body and where it was when listed.
+struct Start {
+  BodyId id;
+  Vec2 position;
+};
+
+// Every dynamic body of the world (slot order) where it is now.
+inline std::vector<Start> dynamic_bodies(const World& world) {
+  std::vector<Start> starts;
+  for (const BodyId id : world.bodies()) {
+    if (world.body_type(id) == BodyType::dynamic) starts.push_back({id, world.position(id)});
+  }
+  return starts;
 }
 
 // Default settings with sleeping off, so nothing stops moving under a test's feet.

@@ -53,6 +53,20 @@ TEST(Sandbox, KeysPauseStepResetSwitchAndToggle) {
   EXPECT_TRUE(sandbox.quit_requested());
 }
 
+// The sandbox steps a scene with its schedule: rain drops 275 bodies before steps 0, 8, ...,
+// and a reset starts the schedule again.
+TEST(Sandbox, RunsTheScenesSchedule) {
+  Headless frame(mink::GlBackend::osmesa, 320, 240);
+  Sandbox sandbox(*frame.renderer, "rain");
+  EXPECT_EQ(sandbox.world().body_count(), 1u);
+  for (int i = 0; i < 9; ++i) sandbox.frame();
+  EXPECT_EQ(sandbox.world().body_count(), 1u + 2 * 275u);
+  sandbox.key("r");
+  EXPECT_EQ(sandbox.world().body_count(), 1u);
+  sandbox.frame();
+  EXPECT_EQ(sandbox.world().body_count(), 1u + 275u);
+}
+
 TEST(Sandbox, ClickOnEmptySpaceDropsAHullThere) {
   Headless frame(mink::GlBackend::osmesa, 480, 360);
   Sandbox sandbox(*frame.renderer, "pyramid");

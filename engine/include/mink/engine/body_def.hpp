@@ -32,6 +32,11 @@ struct BodyDef {
   /// Continuous collision against dynamic bodies too, not only against static and kinematic
   /// ones (for small fast bodies).
   bool bullet = false;
+  /// How far a step may move the body, as a fraction of its smallest half-width, before it
+  /// counts as fast and its motion is swept (continuous collision): a step moving its surface
+  /// farther than this (translation plus turn at its extent) is checked for the first touch on
+  /// the way. >= 0; 0 sweeps every step; a huge value never does.
+  Real continuous_threshold = 0.5;
   std::uint64_t user_data = 0;  ///< anything the caller wants back from World::user_data
 };
 

@@ -80,13 +80,15 @@ struct StepCounters {
   std::size_t constraint_colors = 0;     ///< graph colours the solver used
   std::size_t overflow_constraints = 0;  ///< contacts solved one at a time (colours ran out)
   std::size_t joints = 0;                ///< joints the solver ran (of moving bodies)
+  std::size_t fast_bodies = 0;           ///< bodies swept by continuous collision
+  std::size_t continuous_hits = 0;       ///< of those, stopped short at a first touch
 };
 
 /// @brief Wall time of each phase of the last step, in milliseconds (for tuning; never for tests).
 struct StepProfile {
   /// broadphase pair update, narrowphase manifolds, sleep islands, contact preparation, the
-  /// substepped solve, end-of-step bookkeeping
-  double pairs = 0, collide = 0, islands = 0, prepare = 0, solve = 0, finish = 0;
+  /// substepped solve, continuous collision, end-of-step bookkeeping
+  double pairs = 0, collide = 0, islands = 0, prepare = 0, solve = 0, continuous = 0, finish = 0;
 };
 
 }  // namespace mink

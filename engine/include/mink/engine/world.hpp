@@ -29,6 +29,14 @@ struct ShapeRayHit {
   RayHit hit;     ///< where, in world coordinates
 };
 
+/// @brief A World::cast_shape hit: which shape stopped the cast, and where.
+struct ShapeCastHit {
+  ShapeId shape;      ///< the shape met first
+  Real fraction = 0;  ///< of the translation, at the first touch (0: touching at the start)
+  Vec2 point{0, 0};   ///< on that shape's surface, world
+  Vec2 normal{0, 0};  ///< unit, from that shape towards the cast one
+};
+
 /// @brief The chain a chain segment belongs to (World::shape_chain).
 struct ChainMembership {
   std::uint32_t chain = 0;  ///< the create_chain call that made it, numbered from 0
@@ -143,6 +151,8 @@ class World {
   bool fixed_rotation(BodyId id) const;
   /// @brief True when the body is a bullet (continuous collision against dynamic bodies too).
   bool is_bullet(BodyId id) const;
+  /// @brief BodyDef::continuous_threshold: when a step's motion counts as fast.
+  Real continuous_threshold(BodyId id) const;
   /// @brief Mass, centre (body-local) and rotational inertia in force.
   MassData mass_data(BodyId id) const;
   /// @brief The body's pose blended between before and after the last step: `alpha` 0 gives
@@ -182,6 +192,9 @@ class World {
   void set_fixed_rotation(BodyId id, bool fixed);
   /// @brief Marks the body as a bullet (continuous collision against dynamic bodies too).
   void set_bullet(BodyId id, bool bullet);
+  /// @brief See BodyDef::continuous_threshold.
+  /// @throws InvalidArgumentError for a negative or NaN threshold
+  void set_continuous_threshold(BodyId id, Real threshold);
   /// Sets a kinematic body's velocities so that it reaches `position`, `angle` at the end of
   /// the next step of `time_step` seconds run with WorldDef::substeps (moving platforms that
   /// follow a path). Turns of less than a quarter turn per substep are reached.
@@ -370,6 +383,14 @@ class World {
   std::vector<ShapeId> query_point(const Vec2& point) const;
   /// @brief Closest hit along origin -> origin + translation, if any.
   std::optional<ShapeRayHit> ray_cast(const Vec2& origin, const Vec2& translation) const;
+  /// @brief The shape `def` describes (its geometry; density and materials do not matter),
+  /// placed at `pose` and moved without turning along `translation`: the first solid shape
+  /// it meets (sensors and shapes `filter` does not collide with are passed through), stopping
+  /// the linear slop short of it, as a body swept by continuous collision does. A shape
+  /// touching or overlapping something at the start hits it at fraction 0.
+  /// @throws InvalidArgumentError for a bad shape, pose or translation
+  std::optional<ShapeCastHit> cast_shape(const ShapeDef& def, const Pose& pose,
+                                         const Vec2& translation, const Filter& filter = {}) const;
 
   /// @}
 

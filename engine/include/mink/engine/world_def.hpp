@@ -36,6 +36,13 @@ struct WorldDef {
   /// false: one at a time, as Box2D (the slow twin of the mass-ratio tests).
   bool direct_joint_chains = true;
   /// @}
+  /// Sweep fast bodies over each step and stop them at their first touch (continuous
+  /// collision): against static and kinematic shapes, bullets against everything, and fast
+  /// bodies against each other. false: speculative contacts only.
+  bool enable_continuous = true;
+  /// Sweep fast bodies against each other too, not only bullets (Box2D v3 and Rapier sweep
+  /// non-bullets against static and kinematic shapes only: false matches them).
+  bool continuous_fast_pairs = true;
   /// Fastest speed at which overlap is pushed apart, so deep overlap resolves without popping.
   Real contact_push_max_velocity = 3;
   /// Approach speeds below this do not bounce, whatever the restitution.

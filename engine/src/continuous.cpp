@@ -1,0 +1,221 @@
+// Continuous collision: after the solve, every body whose step moved it far for its size is
+// swept from where it started to where it ended, against what it could pass through, and put
+// back at its first touch. Speculative contacts already stop bodies that are near something
+// when the step begins; the sweep catches what they cannot see coming: a body crossing a thin
+// wall, a terrain edge or another fast body within one step.
+//
+// What sweeps against what: a fast dynamic body against static and kinematic shapes; a bullet
+// against every shape; and, beyond that, fast dynamic bodies against each other, so two
+// thrown bodies meet even without the bullet flag. A pair already within contact range when
+// the step began is left to its contact (sweeping it would stall a body sliding along a
+// surface). Each fast body's first touch is found from the sweeps of the step as solved, so
+// the bodies can be swept in parallel and in any order with the same result; a body stopped
+// short keeps its velocity, and its contact next step does the rest.
+
+#include "continuous.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <variant>
+
+#include "world_state.hpp"
+
+namespace mink {
+
+using detail::Body;
+using detail::FastBody;
+using detail::Shape;
+
+// The sweep of a body the solver moved this step, from the solver's record of it.
+Sweep WorldState::solver_sweep(std::uint32_t solver_index) const {
+  const Body& b = bodies[solver_to_body[solver_index]];
+  const detail::SolverBody& sb = solver_bodies[solver_index];
+  Sweep sweep;
+  sweep.local_center = b.local_center;
+  sweep.center1 = b.center;
+  sweep.center0 = b.center - Vec2(sb.dpx, sb.dpy);
+  // (qc, qs) is the step's rotation exactly, up to whole turns; the summed angle tells how
+  // many (it differs from the exact turn by far less than half a turn).
+  const Real exact = std::atan2(sb.qs, sb.qc);
+  const Real whole = std::round((sb.turn - exact) / (2 * std::numbers::pi));
+  const Real angle0 = b.previous_rotation.angle();
+  sweep.angle0 = angle0;
+  sweep.angle1 = angle0 + exact + 2 * std::numbers::pi * whole;
+  return sweep;
+}
+
+Sweep WorldState::body_sweep(std::uint32_t body) const {
+  const std::int32_t si = body < body_solver_index.size() ? body_solver_index[body] : -1;
+  if (si >= 0) return solver_sweep(static_cast<std::uint32_t>(si));
+  const Body& b = bodies[body];
+  Sweep still;
+  still.local_center = b.local_center;
+  still.center0 = still.center1 = b.center;
+  still.angle0 = still.angle1 = b.rotation.angle();
+  return still;
+}
+
+namespace {
+
+Aabb merge(const Aabb& a, const Aabb& b) {
+  return {a.lower.cwiseMin(b.lower), a.upper.cwiseMax(b.upper)};
+}
+
+}  // namespace
+
+namespace {
+
+// A small circle about the shape's middle, half as wide as the shape is thin: where a shape
+// already near something at the start of a step must not go, whatever the contact did.
+std::optional<Circle> middle_circle(const ShapeGeometry& geometry) {
+  const Real thin = detail::shape_min_extent(geometry);
+  if (!(thin > 0)) return std::nullopt;
+  struct Middle {
+    Vec2 operator()(const Circle& c) const { return c.center; }
+    Vec2 operator()(const Capsule& c) const { return 0.5 * (c.center1 + c.center2); }
+    Vec2 operator()(const Segment& s) const { return 0.5 * (s.point1 + s.point2); }
+    Vec2 operator()(const ChainSegment& s) const { return (*this)(s.segment); }
+    Vec2 operator()(const RoundedPolygon& p) const { return p.hull.centroid(); }
+  };
+  return Circle{std::visit(Middle{}, geometry), 0.5 * thin};
+}
+
+}  // namespace
+
+// The first touch of `fast`'s shapes with `other_shape` moving by `other_sweep`, if it comes
+// before `fast.fraction`. A pair already within contact range when the step began is the
+// contact's to keep apart (sweeping the surfaces would stop a body sliding along a floor at
+// once); the sweep then only keeps the shape's middle from crossing the other shape, which a
+// fast-spinning or corner-sliding body can otherwise do within one step.
+void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
+                            const Sweep& other_sweep) const {
+  const Shape& o = shapes[other_shape];
+  for (const std::uint32_t s : bodies[fast.body].shapes) {
+    const Shape& f = shapes[s];
+    if (!should_make_contact(s, other_shape)) continue;
+    const ShapeDistance start =
+        shape_distance(f.geometry, fast.sweep.pose_at(0), o.geometry, other_sweep.pose_at(0));
+    const bool near = start.overlap || start.distance < 4 * def.linear_slop;
+    ShapeGeometry middle;
+    if (near) {
+      const std::optional<Circle> circle = middle_circle(f.geometry);
+      if (!circle) continue;
+      middle = *circle;
+    }
+    TimeOfImpactInput input;
+    input.shape_a = near ? &middle : &f.geometry;
+    input.sweep_a = fast.sweep;
+    input.shape_b = &o.geometry;
+    input.sweep_b = other_sweep;
+    input.max_fraction = fast.fraction;
+    input.tolerance = 0.25 * def.linear_slop;
+    // The middle stops only when it would touch: the shape is half its thinness deep then,
+    // past anything a contact would allow.
+    input.target =
+        near ? 2 * input.tolerance : slop_target(*input.shape_a, o.geometry, def.linear_slop);
+    const TimeOfImpactOutput out = time_of_impact(input);
+    // A touch at the very start is the contact's: stopping there would hold the body still.
+    if ((out.state == ToiState::hit || out.state == ToiState::gave_up) && out.fraction > 0 &&
+        out.fraction < fast.fraction) {
+      fast.fraction = out.fraction;
+    }
+  }
+}
+
+void WorldState::solve_continuous() {
+  continuous.fast.clear();
+  continuous.hits = 0;
+  // Which bodies moved fast: translation plus turn at the extent against the thinnest
+  // half-width.
+  for (std::uint32_t si = 0; si < solver_to_body.size(); ++si) {
+    const std::uint32_t index = solver_to_body[si];
+    const Body& b = bodies[index];
+    if (b.type != BodyType::dynamic || b.shapes.empty()) continue;
+    const detail::SolverBody& sb = solver_bodies[si];
+    const Real moved = std::hypot(sb.dpx, sb.dpy) + std::abs(sb.turn) * b.extent;
+    if (!b.bullet && moved <= b.continuous_threshold * b.min_extent) continue;
+    FastBody fast;
+    fast.body = index;
+    fast.solver_index = si;
+    fast.bullet = b.bullet;
+    fast.sweep = solver_sweep(si);
+    continuous.fast.push_back(fast);
+  }
+  counters.fast_bodies = continuous.fast.size();
+  if (continuous.fast.empty()) return;
+  // In body order, so sensors meet them in a fixed order.
+  std::sort(continuous.fast.begin(), continuous.fast.end(),
+            [](const FastBody& x, const FastBody& y) { return x.body < y.body; });
+
+  const auto count = static_cast<std::uint32_t>(continuous.fast.size());
+  continuous.candidates.resize(tasks.workers());
+  for (FastBody& fast : continuous.fast) {
+    bool first = true;
+    for (const std::uint32_t s : bodies[fast.body].shapes) {
+      const ShapeGeometry& g = shapes[s].geometry;
+      const Aabb box =
+          merge(compute_aabb(g, fast.sweep.pose_at(0)), compute_aabb(g, fast.sweep.pose_at(1)));
+      fast.box = first ? box : merge(fast.box, box);
+      first = false;
+    }
+  }
+  // Fast bodies against each other: their boxes by lower x, so each finds its neighbours by a
+  // short scan.
+  continuous.fast_by_x.resize(count);
+  for (std::uint32_t i = 0; i < count; ++i) continuous.fast_by_x[i] = i;
+  std::sort(continuous.fast_by_x.begin(), continuous.fast_by_x.end(),
+            [&](std::uint32_t x, std::uint32_t y) {
+              const Real ax = continuous.fast[x].box.lower.x(),
+                         bx = continuous.fast[y].box.lower.x();
+              return ax != bx ? ax < bx : x < y;
+            });
+
+  tasks.parallel_for(count, 4, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
+    std::vector<ProxyId> proxies;
+    for (std::uint32_t i = begin; i < end; ++i) {
+      FastBody& fast = continuous.fast[i];
+      // Static and kinematic shapes (everything, for a bullet) from the broadphase.
+      proxies.clear();
+      broadphase.query(fast.box, proxies);
+      std::vector<std::uint32_t>& found = continuous.candidates[worker];
+      found.clear();
+      for (const ProxyId proxy : proxies) {
+        const auto index = static_cast<std::uint32_t>(broadphase.user_data(proxy));
+        if (index >= shapes.size()) continue;
+        const Shape& o = shapes[index];
+        if (!o.alive || o.proxy != proxy || o.body == fast.body) continue;
+        if (!fast.bullet && bodies[o.body].type == BodyType::dynamic) continue;
+        found.push_back(index);
+      }
+      // The same shape in any order of the broadphase gives the same first touch, but the
+      // order is fixed anyway so the work done is too.
+      std::sort(found.begin(), found.end());
+      for (const std::uint32_t index : found)
+        sweep_pair(fast, index, body_sweep(shapes[index].body));
+      // Other fast bodies (a bullet has met every dynamic shape already).
+      if (fast.bullet || !def.continuous_fast_pairs) continue;
+      for (const std::uint32_t j : continuous.fast_by_x) {
+        const FastBody& other = continuous.fast[j];
+        if (other.box.lower.x() > fast.box.upper.x()) break;
+        if (j == i || other.bullet || !other.box.overlaps(fast.box)) continue;
+        for (const std::uint32_t s : bodies[other.body].shapes) sweep_pair(fast, s, other.sweep);
+      }
+    }
+  });
+
+  // Stopped bodies go back to where they first touched, keeping their velocity.
+  for (FastBody& fast : continuous.fast) {
+    if (fast.fraction >= 1) continue;
+    ++continuous.hits;
+    Body& b = bodies[fast.body];
+    const Pose pose = fast.sweep.pose_at(fast.fraction);
+    b.origin = pose.position;
+    b.rotation = pose.rotation;
+    b.center = b.origin + b.rotation.apply(b.local_center);
+  }
+  counters.continuous_hits = continuous.hits;
+}
+
+}  // namespace mink

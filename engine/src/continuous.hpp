@@ -1,0 +1,32 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "mink/broadphase/broadphase.hpp"
+#include "mink/geometry/aabb.hpp"
+#include "mink/narrowphase/time_of_impact.hpp"
+
+namespace mink::detail {
+
+// A body that moved fast this step: its sweep over the step, the box around it, and the
+// fraction of the step it may keep (1 when nothing was in the way).
+struct FastBody {
+  std::uint32_t body = 0;
+  std::uint32_t solver_index = 0;
+  Sweep sweep;
+  Aabb box;
+  Real fraction = 1;
+  bool bullet = false;
+};
+
+// Continuous collision's per-step lists: the fast bodies in body order, and per worker the
+// broadphase candidates of the body it is sweeping.
+struct ContinuousState {
+  std::vector<FastBody> fast;
+  std::vector<std::uint32_t> fast_by_x;  // indices into `fast`, by their box's lower x
+  std::vector<std::vector<std::uint32_t>> candidates;
+  std::size_t hits = 0;  // fast bodies stopped short this step
+};
+
+}  // namespace mink::detail
