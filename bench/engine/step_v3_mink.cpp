@@ -2,8 +2,10 @@
 // scene's name, on WorldDef::worker_count workers, in one of two settings:
 //   mink_matched   Box2D v3's app's world: 1/60 s steps of 4 substeps, 30 Hz contacts of
 //                  damping ratio 10, 3 m/s push-out, joints at 60 Hz and damping ratio 2,
-//                  restitution and hit thresholds 1 m/s, 400 m/s top speed
-//   mink_defaults  our own solver defaults (WorldDef{}: 5 substeps, 60 Hz contacts, ...)
+//                  restitution and hit thresholds 1 m/s, 400 m/s top speed, fast bodies
+//                  swept against static and kinematic shapes only
+//   mink_defaults  our own solver defaults (WorldDef{}: 5 substeps, 60 Hz contacts, fast
+//                  bodies swept against each other too, ...)
 // Both keep the scene's gravity and sleep as Box2D v3's app does (off only where the scene
 // turns it off, or everywhere with --sleep=off), so the two differ only in what the solver is
 // asked to do.
@@ -12,6 +14,8 @@
 
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "mink/engine/scene.hpp"
 #include "mink/engine/world.hpp"
@@ -31,6 +35,8 @@ void match_box2d_v3(WorldDef& world) {
   world.restitution_threshold = 1;
   world.hit_event_threshold = 1;
   world.max_linear_speed = 400;
+  world.enable_continuous = true;
+  world.continuous_fast_pairs = false;
 }
 
 void our_solver_defaults(WorldDef& world) {
@@ -45,30 +51,39 @@ void our_solver_defaults(WorldDef& world) {
   world.restitution_threshold = ours.restitution_threshold;
   world.hit_event_threshold = ours.hit_event_threshold;
   world.max_linear_speed = ours.max_linear_speed;
+  world.enable_continuous = ours.enable_continuous;
+  world.continuous_fast_pairs = ours.continuous_fast_pairs;
 }
 
-// A scene's world and what it does as it runs. The one place a run drives a scene: a scene's
-// per-step schedule (rain's ragdolls, junkyard's pusher) is called from step().
+// A scene's world run with its schedule (rain's ragdolls, junkyard's pusher), as `mink run`
+// runs it.
 class MinkWorld final : public RaceWorld {
  public:
-  explicit MinkWorld(const SceneDef& scene) : world_(build_world(scene)) {}
+  explicit MinkWorld(const SceneDef& scene) : run_(scene) {}
 
-  void step(int /*index*/) override { world_.step(); }
+  void step(int /*index*/) override { run_.step(); }
 
   RaceCounts counts() const override {
-    return {static_cast<long long>(world_.body_count()),
-            static_cast<long long>(world_.shape_count()),
-            static_cast<long long>(world_.joint_count()),
-            static_cast<long long>(world_.counters().contacts)};
+    const World& world = run_.world();
+    return {static_cast<long long>(world.body_count()), static_cast<long long>(world.shape_count()),
+            static_cast<long long>(world.joint_count()),
+            static_cast<long long>(world.counters().contacts)};
   }
 
  private:
-  World world_;
+  SceneRun run_;
 };
 
 std::unique_ptr<RaceWorld> build(const RaceRequest& request) {
   const auto names = builtin_scene_names();
   if (std::find(names.begin(), names.end(), request.scene->name) == names.end()) return nullptr;
+  // Our built-ins know how long Box2D v3's app runs each scene too: the two tables must agree.
+  for (const BenchmarkScene& ours : benchmark_suite()) {
+    if (ours.name == request.scene->name && ours.steps != request.scene->steps) {
+      throw std::logic_error("benchmark_suite() runs it " + std::to_string(ours.steps) +
+                             " steps, step_v3_suite.hpp " + std::to_string(request.scene->steps));
+    }
+  }
   SceneDef scene = builtin_scene(request.scene->name);
   if (request.implementation == "mink_matched") {
     match_box2d_v3(scene.world);
