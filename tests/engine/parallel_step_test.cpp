@@ -45,16 +45,18 @@ class WorkerCounts : public ::testing::TestWithParam<Case> {};
 TEST_P(WorkerCounts, GiveBitwiseTheSameStateAndEvents) {
   const Case c = GetParam();
   SceneDef scene = builtin_scene(c.scene);
+  // Under the sanitizers (ThreadSanitizer above all, ten times slower) a fifth of the run.
+  const int steps = test::long_run(c.steps, c.steps / 5);
   scene.world.worker_count = 1;
-  const std::uint64_t one = run(scene, c.steps);
+  const std::uint64_t one = run(scene, steps);
   for (const int workers : {2, 3, 4, 8}) {
     scene.world.worker_count = workers;
-    EXPECT_EQ(run(scene, c.steps), one) << c.scene << " at " << workers << " workers";
+    EXPECT_EQ(run(scene, steps), one) << c.scene << " at " << workers << " workers";
   }
   // The scalar twin of the solver, spread over workers too.
   scene.world.simd_solver = false;
   scene.world.worker_count = 2;
-  EXPECT_EQ(run(scene, c.steps), one) << c.scene << ", scalar solver at 2 workers";
+  EXPECT_EQ(run(scene, steps), one) << c.scene << ", scalar solver at 2 workers";
 }
 
 // Stacks, a kinematic-free rain of hulls with sleeping on, a motor-driven drum, joints of
@@ -98,10 +100,10 @@ TEST(WorkerCounts, BouncingRainAgrees) {
     for (ShapeDef& shape : body.shapes) shape.restitution = 0.7;
   }
   scene.world.enable_sleep = false;
-  const std::uint64_t one = run(scene, 250);
+  const std::uint64_t one = run(scene, test::long_run(250, 50));
   for (const int workers : {2, 3}) {
     scene.world.worker_count = workers;
-    EXPECT_EQ(run(scene, 250), one) << workers << " workers";
+    EXPECT_EQ(run(scene, test::long_run(250, 50)), one) << workers << " workers";
   }
 }
 
@@ -119,10 +121,10 @@ TEST(WorkerCounts, FastRainAgrees) {
   World probe = build_world(scene);
   probe.step();
   EXPECT_GT(probe.counters().fast_bodies, 100u);
-  const std::uint64_t one = run(scene, 120);
+  const std::uint64_t one = run(scene, test::long_run(120, 30));
   for (const int workers : {2, 4}) {
     scene.world.worker_count = workers;
-    EXPECT_EQ(run(scene, 120), one) << workers << " workers";
+    EXPECT_EQ(run(scene, test::long_run(120, 30)), one) << workers << " workers";
   }
 }
 
