@@ -6,20 +6,21 @@
 #    joint_grid, junkyard, large_pyramid, many_pyramids, rain, smash, spinner, tumbler,
 #    washer), each stepped as Box2D v3's benchmark app steps it (1/60 s, 4 substeps, continuous
 #    on, as many steps as the app takes), at 1 and 2 workers, against our built-in of the same
-#    name twice: at Box2D v3's settings (mink_matched: 4 substeps, 30 Hz contacts of damping
-#    ratio 10, 3 m/s push-out, joints at 60 Hz and damping ratio 2) and at our own solver
-#    defaults (mink_defaults). Sleeping is as in Box2D v3's app in every run: off where the
+#    name three times: at Box2D v3's settings (mink_matched: 4 substeps, 30 Hz contacts of
+#    damping ratio 10, 3 m/s push-out, joints at 60 Hz and damping ratio 2), the same with
+#    continuous collision off (mink_matched_no_ccd, for what continuous collision costs) and at
+#    our own solver defaults (mink_defaults). Sleeping is as in Box2D v3's app in every run: off where the
 #    scene turns it off (joint_grid, large_pyramid, many_pyramids), on elsewhere. A scene we
 #    have no built-in for is skipped on our side, with a message.
-#    Every run is a process of its own (bench/engine/step_race.hpp). The three runs of a scene
+#    Every run is a process of its own (bench/engine/step_race.hpp). The runs of a scene
 #    and worker count are interleaved: they take turns of 200 ms, one running while the others
 #    are stopped (bench/engine/take_turns.cpp), so a busy moment of a shared machine falls on
-#    all three alike; rounds repeat the whole suite. Step times are wall times, as in
+#    all alike; rounds repeat the whole suite. Step times are wall times, as in
 #    Box2D v3's app; the first step of a run is not timed, as there, nor the first of each turn.
 #    It writes
 #      step_v3.csv          case,size,implementation,median_ns: the median wall time of a step
 #                           over the timed steps of all rounds (size: workers; implementation:
-#                           box2d_v3, mink_matched or mink_defaults)
+#                           box2d_v3, mink_matched, mink_matched_no_ccd or mink_defaults)
 #      step_v3_cpu.csv      the same for the CPU time of a step (every thread of the process).
 #                           On a busy machine every process waits for a core now and then; a
 #                           short step mostly falls between two waits and a long one mostly
@@ -28,6 +29,9 @@
 #                           figure on a busy machine; at 2 it is the work of both workers,
 #                           spinning included, not the time a step takes
 #      step_v3_ratios.csv   ours / Box2D v3 per scene, one column per setting and worker count
+#      step_v3_continuous.csv  case,workers,on_ns,off_ns,cost: mink_matched against
+#                           mink_matched_no_ccd, the median steps and on / off - 1 (the share
+#                           continuous collision adds), per scene and worker count
 #      step_v3.png          those ratios as bars (gnuplot, bench/plot_step_v3.gp)
 #      step_v3_memory.csv   case,implementation,peak_kib: the peak resident memory of the
 #                           scene's process at the first worker count, the most of its rounds
@@ -48,7 +52,8 @@
 #                                     app's counts, or NAME=N,NAME=N for the named scenes only
 #   MINK_BENCH_STEP_V3_SCENES="a b"   part 2: only these scenes (default: all ten)
 #   MINK_BENCH_STEP_V3_WORKERS="1 2"  part 2: worker counts (default 1 and 2)
-#   MINK_BENCH_STEP_V3_IMPLEMENTATIONS="box2d_v3 mink_matched"   part 2: only these
+#   MINK_BENCH_STEP_V3_IMPLEMENTATIONS="box2d_v3 mink_matched"   part 2: only these (default:
+#                                     box2d_v3 mink_matched mink_matched_no_ccd mink_defaults)
 #   MINK_BENCH_STEP_V3_TURN_MS=T      part 2: length of a turn in ms (default 200)
 #   MINK_BENCH_STEP_V3_SLEEP=off      part 2: sleeping off in every scene of both engines
 #                                     (default app: as Box2D v3's app has it)
@@ -88,7 +93,8 @@ turn_ms=${MINK_BENCH_STEP_V3_TURN_MS:-200}
 workers_list=${MINK_BENCH_STEP_V3_WORKERS:-1 2}
 sleep_mode=${MINK_BENCH_STEP_V3_SLEEP:-app}
 steps_override=${MINK_BENCH_STEP_V3_STEPS:-}
-implementations=${MINK_BENCH_STEP_V3_IMPLEMENTATIONS:-box2d_v3 mink_matched mink_defaults}
+known_implementations="box2d_v3 mink_matched mink_matched_no_ccd mink_defaults"
+implementations=${MINK_BENCH_STEP_V3_IMPLEMENTATIONS:-$known_implementations}
 all_scenes=$("$v3_runner" --list | awk '{ printf "%s ", $1 }')
 scenes=${MINK_BENCH_STEP_V3_SCENES:-$all_scenes}
 for scene in $scenes; do
@@ -99,10 +105,10 @@ for scene in $scenes; do
 done
 for implementation in $implementations; do
   case $implementation in
-    box2d_v3 | mink_matched | mink_defaults) ;;
+    box2d_v3 | mink_matched | mink_matched_no_ccd | mink_defaults) ;;
     *)
       echo "run_step.sh: MINK_BENCH_STEP_V3_IMPLEMENTATIONS: $implementation is not one of" \
-        "box2d_v3 mink_matched mink_defaults" >&2
+        "$known_implementations" >&2
       exit 2
       ;;
   esac
@@ -164,7 +170,7 @@ for round in $(seq "$rounds"); do
             echo "round=$round $line" >>"$work/runs"
             echo "$line" | awk -v round="$round" '{
               for (i = 1; i <= NF; ++i) { split($i, kv, "="); f[kv[1]] = kv[2] }
-              printf "round %s  %-13s %d worker(s)  %-13s %9.3f ms/step (CPU %.3f)" \
+              printf "round %s  %-13s %d worker(s)  %-19s %9.3f ms/step (CPU %.3f)" \
                      "  peak %6.1f MiB\n", round, f["scene"], f["workers"], f["implementation"],
                      f["median_ns"] / 1e6, f["cpu_median_ns"] / 1e6, f["peak_kib"] / 1024 }'
             ;;
@@ -268,12 +274,32 @@ write_ratios() {
 }
 write_ratios "$v3_csv" 1 >"$ratios_csv"
 
+# What continuous collision costs: the matched runs with it on against off.
+continuous_csv=$results_dir/step_v3_continuous.csv
+awk -F, -v workers_list="$workers_list" -v scenes="$scenes" '
+  FNR > 1 { t[$1 "," $2 "," $3] = $4 }
+  END {
+    print "case,workers,on_ns,off_ns,cost"
+    nw = split(workers_list, w, " ")
+    ns = split(scenes, s, " ")
+    for (i = 1; i <= ns; ++i) {
+      for (j = 1; j <= nw; ++j) {
+        on = t[s[i] "," w[j] ",mink_matched"]
+        off = t[s[i] "," w[j] ",mink_matched_no_ccd"]
+        if (on != "" && off != "") printf "%s,%s,%s,%s,%.4f\n", s[i], w[j], on, off, on / off - 1
+      }
+    }
+  }' "$v3_csv" >"$continuous_csv"
+
 echo
 echo "Ours / Box2D v3 (median step time; below 1: ours is faster), $ratios_csv:"
 column -s, -t "$ratios_csv"
 echo
 echo "The same for CPU time (at 1 worker the time on a core of its own; $cpu_csv):"
 write_ratios "$cpu_csv" 0 | column -s, -t
+echo
+echo "What continuous collision costs (mink_matched / mink_matched_no_ccd - 1), $continuous_csv:"
+column -s, -t "$continuous_csv"
 echo
 echo "Peak memory (KiB, $first_workers worker(s)), $memory_csv:"
 column -s, -t "$memory_csv"

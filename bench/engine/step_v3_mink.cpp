@@ -1,13 +1,15 @@
 // Our side of the race against Box2D v3 (bench/run_step.sh): the built-in scene of the suite
-// scene's name, on WorldDef::worker_count workers, in one of two settings:
+// scene's name, on WorldDef::worker_count workers, in one of three settings:
 //   mink_matched   Box2D v3's app's world: 1/60 s steps of 4 substeps, 30 Hz contacts of
 //                  damping ratio 10, 3 m/s push-out, joints at 60 Hz and damping ratio 2,
 //                  restitution and hit thresholds 1 m/s, 400 m/s top speed, fast bodies
 //                  swept against static and kinematic shapes only
+//   mink_matched_no_ccd  the same with continuous collision off (WorldDef::enable_continuous),
+//                  to show what continuous collision costs
 //   mink_defaults  our own solver defaults (WorldDef{}: 5 substeps, 60 Hz contacts, fast
 //                  bodies swept against each other too, ...)
-// Both keep the scene's gravity and sleep as Box2D v3's app does (off only where the scene
-// turns it off, or everywhere with --sleep=off), so the two differ only in what the solver is
+// All keep the scene's gravity and sleep as Box2D v3's app does (off only where the scene
+// turns it off, or everywhere with --sleep=off), so they differ only in what the solver is
 // asked to do.
 // A suite scene that is not one of our built-ins is skipped. See step_race.hpp for the
 // command line.
@@ -87,6 +89,9 @@ std::unique_ptr<RaceWorld> build(const RaceRequest& request) {
   SceneDef scene = builtin_scene(request.scene->name);
   if (request.implementation == "mink_matched") {
     match_box2d_v3(scene.world);
+  } else if (request.implementation == "mink_matched_no_ccd") {
+    match_box2d_v3(scene.world);
+    scene.world.enable_continuous = false;
   } else {
     our_solver_defaults(scene.world);
   }
@@ -100,5 +105,6 @@ std::unique_ptr<RaceWorld> build(const RaceRequest& request) {
 
 int main(int argc, char** argv) {
   using namespace mink::bench;
-  return race_main(argc, argv, RaceEngine{{"mink_matched", "mink_defaults"}, build});
+  return race_main(argc, argv,
+                   RaceEngine{{"mink_matched", "mink_matched_no_ccd", "mink_defaults"}, build});
 }
