@@ -148,7 +148,7 @@ int run_scene(const RunOptions& options, Streams streams) {
   if (!options.stats.empty()) {
     stats = open_output_file(options.stats, "--stats file");
     stats << "step,time,bodies,awake,pairs,contacts,kinetic_energy,step_ms,pairs_ms,collide_ms,"
-             "islands_ms,prepare_ms,solve_ms,continuous_ms,finish_ms\n";
+             "islands_ms,prepare_ms,solve_ms,continuous_ms,finish_ms,fast_bodies,continuous_hits\n";
   }
   std::optional<BodyTrace> trace;
   if (!options.trace.empty()) {
@@ -189,12 +189,13 @@ int run_scene(const RunOptions& options, Streams streams) {
     contacts_sum += c.touching_contacts;
     if (stats.is_open()) {
       const StepProfile& p = world.profile();
-      std::snprintf(line, sizeof line,
-                    "%llu,%.17g,%zu,%zu,%zu,%zu,%.17g,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n",
-                    static_cast<unsigned long long>(world.step_count()), world.time(),
-                    world.body_count(), c.awake_bodies, c.broadphase_pairs, c.touching_contacts,
-                    kinetic_energy(world), ms, p.pairs, p.collide, p.islands, p.prepare, p.solve,
-                    p.continuous, p.finish);
+      std::snprintf(
+          line, sizeof line,
+          "%llu,%.17g,%zu,%zu,%zu,%zu,%.17g,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%zu,%zu\n",
+          static_cast<unsigned long long>(world.step_count()), world.time(), world.body_count(),
+          c.awake_bodies, c.broadphase_pairs, c.touching_contacts, kinetic_energy(world), ms,
+          p.pairs, p.collide, p.islands, p.prepare, p.solve, p.continuous, p.finish, c.fast_bodies,
+          c.continuous_hits);
       stats << line;
     }
     if (trace) trace->write_step(world);

@@ -64,6 +64,13 @@ void BruteForceBroadphase::query(const Aabb& box, std::vector<ProxyId>& out) con
   }
 }
 
+void BruteForceBroadphase::query_static(const Aabb& box, std::vector<ProxyId>& out) const {
+  ProxyStore::check_box(box, "query_static");
+  for (ProxyId id = 0; id < store_.id_bound(); ++id) {
+    if (store_.alive(id) && store_.is_static(id) && store_.fat(id).overlaps(box)) out.push_back(id);
+  }
+}
+
 void BruteForceBroadphase::query_point(const Vec2& point, std::vector<ProxyId>& out) const {
   ProxyStore::check_point(point, "query_point");
   for (ProxyId id = 0; id < store_.id_bound(); ++id) {

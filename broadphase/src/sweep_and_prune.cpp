@@ -559,6 +559,18 @@ void SweepAndPrune::query(const Aabb& box, std::vector<ProxyId>& out) const {
   }
 }
 
+void SweepAndPrune::query_static(const Aabb& box, std::vector<ProxyId>& out) const {
+  ProxyStore::check_box(box, "query_static");
+  sweep(oriented(box), [&](const Entry& e) {
+    if (e.is_static != 0 && touched_[e.id] == 0) out.push_back(e.id);
+  });
+  for (const ProxyId id : touched_ids_) {
+    if ((touched_[id] & kDestroyed) == 0 && store_.is_static(id) && store_.fat(id).overlaps(box)) {
+      out.push_back(id);
+    }
+  }
+}
+
 void SweepAndPrune::query_point(const Vec2& point, std::vector<ProxyId>& out) const {
   ProxyStore::check_point(point, "query_point");
   query(Aabb{point, point}, out);

@@ -134,13 +134,12 @@ void WorldState::solve_continuous() {
     const Body& b = bodies[index];
     if (b.type != BodyType::dynamic || b.shapes.empty()) continue;
     const detail::SolverBody& sb = solver_bodies[si];
-    const Real moved = std::hypot(sb.dpx, sb.dpy) + std::abs(sb.turn) * b.extent;
+    const Real moved = std::sqrt(sb.dpx * sb.dpx + sb.dpy * sb.dpy) + std::abs(sb.turn) * b.extent;
     if (!b.bullet && moved <= b.continuous_threshold * b.min_extent) continue;
     FastBody fast;
     fast.body = index;
     fast.solver_index = si;
     fast.bullet = b.bullet;
-    fast.sweep = solver_sweep(si);
     continuous.fast.push_back(fast);
   }
   counters.fast_bodies = continuous.fast.size();
@@ -151,20 +150,47 @@ void WorldState::solve_continuous() {
 
   const auto count = static_cast<std::uint32_t>(continuous.fast.size());
   continuous.candidates.resize(tasks.workers());
-  for (FastBody& fast : continuous.fast) {
-    bool first = true;
-    for (const std::uint32_t s : bodies[fast.body].shapes) {
-      const ShapeGeometry& g = shapes[s].geometry;
-      const Aabb box =
-          merge(compute_aabb(g, fast.sweep.pose_at(0)), compute_aabb(g, fast.sweep.pose_at(1)));
-      fast.box = first ? box : merge(fast.box, box);
-      first = false;
+  // The box over the step from the start and end poses as the solver left them; the sweep
+  // (two arc tangents) waits until a body has something to meet, which most fast bodies, in
+  // free flight, do not.
+  tasks.parallel_for(count, 16, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+    for (std::uint32_t i = begin; i < end; ++i) {
+      FastBody& fast = continuous.fast[i];
+      const Body& b = bodies[fast.body];
+      const detail::SolverBody& sb = solver_bodies[fast.solver_index];
+      const Pose finish = b.pose();
+      const Pose start{b.center - Vec2(sb.dpx, sb.dpy) - b.previous_rotation.apply(b.local_center),
+                       b.previous_rotation};
+      bool first = true;
+      fast.covered = true;
+      for (const std::uint32_t s : b.shapes) {
+        const Shape& shape = shapes[s];
+        const Aabb box =
+            merge(compute_aabb(shape.geometry, start), compute_aabb(shape.geometry, finish));
+        fast.box = first ? box : merge(fast.box, box);
+        first = false;
+        fast.covered = fast.covered && shape.proxy != null_proxy &&
+                       broadphase.fat_aabb(shape.proxy).contains(box);
+      }
+      // Fast bodies meet each other on both their sweeps, so every sweep is needed then.
+      if (def.continuous_fast_pairs) {
+        fast.sweep = solver_sweep(fast.solver_index);
+        fast.has_sweep = true;
+      }
+    }
+  });
+  continuous.kinematic_shapes.clear();
+  for (const Body& b : bodies) {
+    if (!b.alive || !b.enabled || b.type != BodyType::kinematic) continue;
+    for (const std::uint32_t s : b.shapes) {
+      if (shapes[s].proxy != null_proxy) continuous.kinematic_shapes.push_back(s);
     }
   }
   // Fast bodies against each other: their boxes by lower x, so each finds its neighbours by a
   // short scan.
-  continuous.fast_by_x.resize(count);
-  for (std::uint32_t i = 0; i < count; ++i) continuous.fast_by_x[i] = i;
+  continuous.fast_by_x.clear();
+  if (def.continuous_fast_pairs) continuous.fast_by_x.resize(count);
+  for (std::uint32_t i = 0; i < continuous.fast_by_x.size(); ++i) continuous.fast_by_x[i] = i;
   std::sort(continuous.fast_by_x.begin(), continuous.fast_by_x.end(),
             [&](std::uint32_t x, std::uint32_t y) {
               const Real ax = continuous.fast[x].box.lower.x(),
@@ -176,22 +202,50 @@ void WorldState::solve_continuous() {
     std::vector<ProxyId> proxies;
     for (std::uint32_t i = begin; i < end; ++i) {
       FastBody& fast = continuous.fast[i];
-      // Static and kinematic shapes (everything, for a bullet) from the broadphase.
-      proxies.clear();
-      broadphase.query(fast.box, proxies);
+      // Static and kinematic shapes (everything, for a bullet) whose broadphase boxes meet the
+      // body's box over the step: from its contacts when its shapes stayed within their
+      // broadphase boxes (the broadphase paired them with all of those), else from queries.
       std::vector<std::uint32_t>& found = continuous.candidates[worker];
       found.clear();
-      for (const ProxyId proxy : proxies) {
-        const auto index = static_cast<std::uint32_t>(broadphase.user_data(proxy));
-        if (index >= shapes.size()) continue;
+      const auto add_if_met = [&](std::uint32_t index) {
         const Shape& o = shapes[index];
-        if (!o.alive || o.proxy != proxy || o.body == fast.body) continue;
-        if (!fast.bullet && bodies[o.body].type == BodyType::dynamic) continue;
-        found.push_back(index);
+        if (broadphase.fat_aabb(o.proxy).overlaps(fast.box)) found.push_back(index);
+      };
+      if (fast.covered && !fast.bullet) {
+        for (const std::uint32_t c : bodies[fast.body].contacts) {
+          const detail::Contact& contact = contacts[c];
+          const bool a_is_fast = contact.body_a == fast.body;
+          const std::uint32_t other = a_is_fast ? contact.body_b : contact.body_a;
+          if (bodies[other].type == BodyType::dynamic) continue;
+          add_if_met(a_is_fast ? contact.shape_b : contact.shape_a);
+        }
+      } else {
+        proxies.clear();
+        if (fast.bullet) {
+          broadphase.query(fast.box, proxies);
+        } else {
+          broadphase.query_static(fast.box, proxies);
+        }
+        for (const ProxyId proxy : proxies) {
+          const auto index = static_cast<std::uint32_t>(broadphase.user_data(proxy));
+          if (index >= shapes.size()) continue;
+          const Shape& o = shapes[index];
+          if (!o.alive || o.proxy != proxy || o.body == fast.body) continue;
+          found.push_back(index);
+        }
+        if (!fast.bullet) {
+          for (const std::uint32_t index : continuous.kinematic_shapes) add_if_met(index);
+        }
+      }
+      if (!fast.has_sweep && !found.empty()) {
+        fast.sweep = solver_sweep(fast.solver_index);
+        fast.has_sweep = true;
       }
       // The same shape in any order of the broadphase gives the same first touch, but the
-      // order is fixed anyway so the work done is too.
+      // order is fixed anyway so the work done is too (and a shape met by several of the
+      // body's shapes is swept once).
       std::sort(found.begin(), found.end());
+      found.erase(std::unique(found.begin(), found.end()), found.end());
       for (const std::uint32_t index : found)
         sweep_pair(fast, index, body_sweep(shapes[index].body));
       // Other fast bodies (a bullet has met every dynamic shape already).
@@ -205,6 +259,14 @@ void WorldState::solve_continuous() {
     }
   });
 
+  // Sensors see fast bodies along their sweeps.
+  if (!sensors.empty()) {
+    for (FastBody& fast : continuous.fast) {
+      if (fast.has_sweep) continue;
+      fast.sweep = solver_sweep(fast.solver_index);
+      fast.has_sweep = true;
+    }
+  }
   // Stopped bodies go back to where they first touched, keeping their velocity.
   for (FastBody& fast : continuous.fast) {
     if (fast.fraction >= 1) continue;

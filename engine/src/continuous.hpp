@@ -14,8 +14,12 @@ namespace mink::detail {
 struct FastBody {
   std::uint32_t body = 0;
   std::uint32_t solver_index = 0;
-  Sweep sweep;
+  Sweep sweep;  // valid once has_sweep: found only for a body with something to meet
+  bool has_sweep = false;
   Aabb box;
+  // Each shape's box over the step lies in its broadphase box: the body's contacts then hold
+  // every static and kinematic shape the sweep can meet, and no query is needed.
+  bool covered = false;
   Real fraction = 1;
   bool bullet = false;
 };
@@ -26,6 +30,9 @@ struct ContinuousState {
   std::vector<FastBody> fast;
   std::vector<std::uint32_t> fast_by_x;  // indices into `fast`, by their box's lower x
   std::vector<std::vector<std::uint32_t>> candidates;
+  // Shapes of kinematic bodies, which the broadphase files with the moving ones: a fast body
+  // asks the broadphase for static shapes only and tests these itself.
+  std::vector<std::uint32_t> kinematic_shapes;
   std::size_t hits = 0;  // fast bodies stopped short this step
 };
 

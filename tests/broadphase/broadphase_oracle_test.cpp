@@ -144,6 +144,11 @@ class Twin {
     fast_.query(box, fast_out);
     slow_.query(box, slow_out);
     EXPECT_EQ(fast_handles_.named(fast_out), slow_handles_.named(slow_out));
+    fast_out.clear();
+    slow_out.clear();
+    fast_.query_static(box, fast_out);
+    slow_.query_static(box, slow_out);
+    EXPECT_EQ(fast_handles_.named(fast_out), slow_handles_.named(slow_out));
   }
   void compare_point_query(const Vec2& point) {
     std::vector<ProxyId> fast_out, slow_out;

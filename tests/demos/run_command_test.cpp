@@ -48,7 +48,7 @@ TEST(RunCommand, StatsCsvHasOneRowPerStepAndTheIssueColumns) {
   ASSERT_EQ(lines.size(), 31u);
   EXPECT_EQ(lines[0],
             "step,time,bodies,awake,pairs,contacts,kinetic_energy,step_ms,pairs_ms,collide_ms,"
-            "islands_ms,prepare_ms,solve_ms,continuous_ms,finish_ms");
+            "islands_ms,prepare_ms,solve_ms,continuous_ms,finish_ms,fast_bodies,continuous_hits");
   const std::size_t bodies = builtin_scene("pyramid").bodies.size();
   for (std::size_t i = 1; i < lines.size(); ++i) {
     unsigned long long step = 0;
@@ -403,9 +403,9 @@ TEST(RunCommand, ThreadsGiveTheSameTrace) {
   std::string traces[3];
   for (int i = 0; i < 3; ++i) {
     const auto file = dir / ("trace" + std::to_string(i) + ".csv");
-    const CliResult r = run_cli({"run", "tumbler_400", "--steps", "120", "--no-render", "--threads",
-                                 std::to_string(i + 1), "--trace", file.string(), "--trace-every",
-                                 "10"});
+    const CliResult r =
+        run_cli({"run", "tumbler_400", "--steps", "120", "--no-render", "--threads",
+                 std::to_string(i + 1), "--trace", file.string(), "--trace-every", "10"});
     ASSERT_EQ(r.code, 0) << r.err;
     traces[i] = read_text(file);
   }

@@ -61,6 +61,9 @@ class Broadphase {
   /// @throws InvalidArgumentError for a bad box or a non-finite point
   virtual void query(const Aabb& box, std::vector<ProxyId>& out) const = 0;
   virtual void query_point(const Vec2& point, std::vector<ProxyId>& out) const = 0;
+  /// @brief As query(), but only the proxies created as ProxyKind::static_body: what a moving
+  /// body sweeps against, without visiting its moving neighbours.
+  virtual void query_static(const Aabb& box, std::vector<ProxyId>& out) const = 0;
 };
 
 }  // namespace mink

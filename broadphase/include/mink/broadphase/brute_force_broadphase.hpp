@@ -26,6 +26,7 @@ class BruteForceBroadphase final : public Broadphase {
 
   void query(const Aabb& box, std::vector<ProxyId>& out) const override;
   void query_point(const Vec2& point, std::vector<ProxyId>& out) const override;
+  void query_static(const Aabb& box, std::vector<ProxyId>& out) const override;
 
  private:
   ProxyStore store_;

@@ -39,6 +39,7 @@ class SweepAndPrune final : public Broadphase {
 
   void query(const Aabb& box, std::vector<ProxyId>& out) const override;
   void query_point(const Vec2& point, std::vector<ProxyId>& out) const override;
+  void query_static(const Aabb& box, std::vector<ProxyId>& out) const override;
 
   // Statistics, for tests and tuning.
   int sweep_axis() const { return sweep_axis_; }
