@@ -128,7 +128,9 @@ void WorldState::solve_continuous() {
   continuous.fast.clear();
   continuous.hits = 0;
   // Which bodies moved fast: translation plus turn at the extent against the thinnest
-  // half-width.
+  // half-width. Listed in body order, so sensors meet them in a fixed order: sorted as
+  // (body, solver index) keys, which is cheaper than sorting the records.
+  continuous.fast_keys.clear();
   for (std::uint32_t si = 0; si < solver_to_body.size(); ++si) {
     const std::uint32_t index = solver_to_body[si];
     const Body& b = bodies[index];
@@ -136,26 +138,42 @@ void WorldState::solve_continuous() {
     const detail::SolverBody& sb = solver_bodies[si];
     const Real moved = std::sqrt(sb.dpx * sb.dpx + sb.dpy * sb.dpy) + std::abs(sb.turn) * b.extent;
     if (!b.bullet && moved <= b.continuous_threshold * b.min_extent) continue;
-    FastBody fast;
-    fast.body = index;
-    fast.solver_index = si;
-    fast.bullet = b.bullet;
-    continuous.fast.push_back(fast);
+    continuous.fast_keys.push_back(std::uint64_t{index} << 32 | si);
   }
-  counters.fast_bodies = continuous.fast.size();
-  if (continuous.fast.empty()) return;
-  // In body order, so sensors meet them in a fixed order.
-  std::sort(continuous.fast.begin(), continuous.fast.end(),
-            [](const FastBody& x, const FastBody& y) { return x.body < y.body; });
+  counters.fast_bodies = continuous.fast_keys.size();
+  if (continuous.fast_keys.empty()) return;
+  std::sort(continuous.fast_keys.begin(), continuous.fast_keys.end());
+  continuous.fast.resize(continuous.fast_keys.size());
+  for (std::size_t i = 0; i < continuous.fast_keys.size(); ++i) {
+    FastBody& fast = continuous.fast[i];
+    fast = FastBody{};
+    fast.body = static_cast<std::uint32_t>(continuous.fast_keys[i] >> 32);
+    fast.solver_index = static_cast<std::uint32_t>(continuous.fast_keys[i]);
+    fast.bullet = bodies[fast.body].bullet;
+  }
 
   const auto count = static_cast<std::uint32_t>(continuous.fast.size());
   continuous.candidates.resize(tasks.workers());
+  // Kinematic shapes, and whether there is anything static or kinematic to meet at all (in
+  // a world of dynamic bodies only, a fast body that is no bullet has nothing to sweep).
+  continuous.kinematic_shapes.clear();
+  bool fixed_shapes = false;
+  for (const Body& b : bodies) {
+    if (!b.alive || !b.enabled || b.type == BodyType::dynamic || b.shapes.empty()) continue;
+    fixed_shapes = true;
+    if (b.type != BodyType::kinematic) continue;
+    for (const std::uint32_t s : b.shapes) {
+      if (shapes[s].proxy != null_proxy) continuous.kinematic_shapes.push_back(s);
+    }
+  }
   // The box over the step from the start and end poses as the solver left them; the sweep
   // (two arc tangents) waits until a body has something to meet, which most fast bodies, in
   // free flight, do not.
   tasks.parallel_for(count, 16, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
     for (std::uint32_t i = begin; i < end; ++i) {
       FastBody& fast = continuous.fast[i];
+      // A body with nothing to meet needs no box (sensors and fast pairs use it too).
+      if (!fast.bullet && !fixed_shapes && !def.continuous_fast_pairs && sensors.empty()) continue;
       const Body& b = bodies[fast.body];
       const detail::SolverBody& sb = solver_bodies[fast.solver_index];
       const Pose finish = b.pose();
@@ -179,13 +197,6 @@ void WorldState::solve_continuous() {
       }
     }
   });
-  continuous.kinematic_shapes.clear();
-  for (const Body& b : bodies) {
-    if (!b.alive || !b.enabled || b.type != BodyType::kinematic) continue;
-    for (const std::uint32_t s : b.shapes) {
-      if (shapes[s].proxy != null_proxy) continuous.kinematic_shapes.push_back(s);
-    }
-  }
   // Fast bodies against each other: their boxes by lower x, so each finds its neighbours by a
   // short scan.
   continuous.fast_by_x.clear();
@@ -211,7 +222,9 @@ void WorldState::solve_continuous() {
         const Shape& o = shapes[index];
         if (broadphase.fat_aabb(o.proxy).overlaps(fast.box)) found.push_back(index);
       };
-      if (fast.covered && !fast.bullet) {
+      if (!fast.bullet && !fixed_shapes) {
+        // Nothing static or kinematic in the world.
+      } else if (fast.covered && !fast.bullet) {
         for (const std::uint32_t c : bodies[fast.body].contacts) {
           const detail::Contact& contact = contacts[c];
           const bool a_is_fast = contact.body_a == fast.body;
