@@ -25,6 +25,7 @@ struct Options {
   std::string samples;
   std::string_view implementation;
   bool sleep_off = false;  // in every scene
+  bool profile = false;
 };
 
 long long clock_ns(clockid_t clock) {
@@ -90,6 +91,8 @@ bool parse(int argc, char** argv, const RaceEngine& engine, Options& options) {
         return false;
       }
       options.implementation = name;
+    } else if (arg == "--profile") {
+      options.profile = true;
     } else if (arg == "--sleep=app" || arg == "--sleep=off") {
       options.sleep_off = arg == "--sleep=off";
     } else if (!arg.starts_with("-") && options.scene == nullptr) {
@@ -106,7 +109,7 @@ bool parse(int argc, char** argv, const RaceEngine& engine, Options& options) {
   if (options.scene == nullptr) {
     std::fprintf(stderr,
                  "usage: %s SCENE [--workers=N] [--steps=N] [--warmup=K] "
-                 "[--samples=FILE] [--implementation=NAME] [--sleep=app|off]\n",
+                 "[--samples=FILE] [--implementation=NAME] [--sleep=app|off] [--profile]\n",
                  argv[0]);
     return false;
   }
@@ -140,6 +143,7 @@ int run(const Options& options, const RaceEngine& engine) {
   times.reserve(static_cast<std::size_t>(options.steps));
   cpu_times.reserve(static_cast<std::size_t>(options.steps));
   long long turn_end = 0;  // wall time at which the current turn is over
+  std::vector<std::pair<std::string, double>> phases;  // summed over the timed steps
   for (int i = 0; i < options.steps; ++i) {
     bool turn_starts = false;
     if (options.turn_ms > 0 && clock_ns(CLOCK_MONOTONIC) >= turn_end) {
@@ -153,6 +157,14 @@ int run(const Options& options, const RaceEngine& engine) {
     if (i >= options.warmup && !turn_starts) {
       times.push_back(end.wall - start.wall);
       cpu_times.push_back(end.cpu - start.cpu);
+      if (options.profile) {
+        const auto step_phases = world->profile();
+        if (phases.empty()) {
+          for (const auto& [name, ms] : step_phases) phases.emplace_back(name, 0.0);
+        }
+        for (std::size_t k = 0; k < step_phases.size(); ++k)
+          phases[k].second += step_phases[k].second;
+      }
     }
   }
   const RaceCounts counts = world->counts();
@@ -177,6 +189,9 @@ int run(const Options& options, const RaceEngine& engine) {
       static_cast<int>(options.implementation.size()), options.implementation.data(), options.steps,
       times.size(), median(times), median(cpu_times), peak, base, counts.bodies, counts.shapes,
       counts.joints, counts.contacts);
+  for (const auto& [name, ms] : phases) {
+    std::printf("phase name=%s ms=%.4f\n", name.c_str(), ms / static_cast<double>(times.size()));
+  }
   return 0;
 }
 

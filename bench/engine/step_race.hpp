@@ -17,6 +17,8 @@
 //   --implementation=   which of the runner's implementations (default: its first)
 //   --sleep=app|off     app (default): sleeping as Box2D v3's app has it, off only where the
 //                       scene turns it off; off: off in every scene
+//   --profile           also print the mean time per step of each phase the engine reports
+//                       (a `phase name=... ms=...` line each, after the race line)
 //   --turn-ms=T         stop (SIGSTOP) once the world is built, and then after the first step
 //                       that ends T ms or more after the last stop, for mink_bench_take_turns to
 //                       run the runners of a race in turns; the first step after each stop is
@@ -31,7 +33,9 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "step_v3_suite.hpp"
@@ -53,6 +57,8 @@ class RaceWorld {
   /// Step `index` (0 for the first): the scene's own per-step actions, then one world step.
   virtual void step(int index) = 0;
   virtual RaceCounts counts() const = 0;
+  /// The phases of the last step and their times in milliseconds, as the engine reports them.
+  virtual std::vector<std::pair<std::string, double>> profile() const = 0;
 };
 
 /// What a runner is asked to build.

@@ -70,6 +70,30 @@ class Box2dV3World final : public RaceWorld {
     return {c.bodyCount, c.shapeCount, c.jointCount, c.contactCount};
   }
 
+  std::vector<std::pair<std::string, double>> profile() const override {
+    const b2Profile p = b2World_GetProfile(world_);
+    return {{"step", p.step},
+            {"pairs", p.pairs},
+            {"collide", p.collide},
+            {"solve", p.solve},
+            {"solver_setup", p.solverSetup},
+            {"prepare_constraints", p.prepareConstraints},
+            {"integrate_velocities", p.integrateVelocities},
+            {"warm_start", p.warmStart},
+            {"solve_impulses", p.solveImpulses},
+            {"integrate_positions", p.integratePositions},
+            {"relax_impulses", p.relaxImpulses},
+            {"apply_restitution", p.applyRestitution},
+            {"store_impulses", p.storeImpulses},
+            {"split_islands", p.splitIslands},
+            {"transforms", p.transforms},
+            {"hit_events", p.hitEvents},
+            {"refit", p.refit},
+            {"bullets", p.bullets},
+            {"sleep_islands", p.sleepIslands},
+            {"sensors", p.sensors}};
+  }
+
  private:
   const Box2dV3Scene& scene_;
   b2WorldId world_{};

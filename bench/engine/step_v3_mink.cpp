@@ -72,6 +72,19 @@ class MinkWorld final : public RaceWorld {
             static_cast<long long>(world.counters().contacts)};
   }
 
+  std::vector<std::pair<std::string, double>> profile() const override {
+    const StepProfile& p = run_.world().profile();
+    return {
+        {"step", p.pairs + p.collide + p.islands + p.prepare + p.solve + p.continuous + p.finish},
+        {"pairs", p.pairs},
+        {"collide", p.collide},
+        {"islands", p.islands},
+        {"prepare", p.prepare},
+        {"solve", p.solve},
+        {"continuous", p.continuous},
+        {"finish", p.finish}};
+  }
+
  private:
   SceneRun run_;
 };

@@ -23,18 +23,18 @@ namespace {
 
 // Written exactly as the wide path's lane-wise selects, so both give the same bits (even the
 // sign of a zero).
-inline Real smax(Real a, Real b) {
+inline SolverReal smax(SolverReal a, SolverReal b) {
   return a > b ? a : b;
 }
-inline Real smin(Real a, Real b) {
+inline SolverReal smin(SolverReal a, SolverReal b) {
   return a < b ? a : b;
 }
 
 // As the wide path's scatter: a body the solver cannot move (no inverse mass or inertia) may
 // be in several constraints of a colour solved at once on other threads, so it is never
 // written.
-inline void store_velocity(SolverBody& body, Real inv_mass, Real inv_inertia, Real vx, Real vy,
-                           Real w) {
+inline void store_velocity(SolverBody& body, SolverReal inv_mass, SolverReal inv_inertia,
+                           SolverReal vx, SolverReal vy, SolverReal w) {
   if (inv_mass == 0 && inv_inertia == 0) return;
   body.vx = vx;
   body.vy = vy;
@@ -45,20 +45,20 @@ inline void store_velocity(SolverBody& body, Real inv_mass, Real inv_inertia, Re
 
 void integrate_velocities(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
                           const SolverSettings& settings) {
-  const Real max_speed_squared = settings.max_linear_speed * settings.max_linear_speed;
+  const SolverReal max_speed_squared = settings.max_linear_speed * settings.max_linear_speed;
   // A body may turn at most an eighth of a turn per substep: beyond that the rotation
   // integration below is meaningless.
-  const Real max_angular_speed = 0.25 * std::numbers::pi * settings.inv_h;
+  const SolverReal max_angular_speed = 0.25 * std::numbers::pi * settings.inv_h;
   const std::size_t count = bodies.size();
   for (std::size_t i = 0; i < count; ++i) {
     SolverBody& body = bodies[i];
     const SolverBodyParams& p = params[i];
-    Real vx = body.vx * p.linear_damping + p.dvx;
-    Real vy = body.vy * p.linear_damping + p.dvy;
-    Real w = body.w * p.angular_damping + p.dw;
-    const Real speed_squared = vx * vx + vy * vy;
+    SolverReal vx = body.vx * p.linear_damping + p.dvx;
+    SolverReal vy = body.vy * p.linear_damping + p.dvy;
+    SolverReal w = body.w * p.angular_damping + p.dw;
+    const SolverReal speed_squared = vx * vx + vy * vy;
     if (speed_squared > max_speed_squared) {
-      const Real ratio = settings.max_linear_speed / std::sqrt(speed_squared);
+      const SolverReal ratio = settings.max_linear_speed / std::sqrt(speed_squared);
       vx *= ratio;
       vy *= ratio;
     }
@@ -69,16 +69,16 @@ void integrate_velocities(std::span<SolverBody> bodies, std::span<const SolverBo
   }
 }
 
-void integrate_positions(std::span<SolverBody> bodies, Real h) {
+void integrate_positions(std::span<SolverBody> bodies, SolverReal h) {
   for (SolverBody& body : bodies) {
     body.dpx += h * body.vx;
     body.dpy += h * body.vy;
     // q += h * w * perp(q), renormalised: exact direction, a cheap stand-in for sin/cos.
-    const Real hw = h * body.w;
+    const SolverReal hw = h * body.w;
     body.turn += hw;
-    const Real qc = body.qc - hw * body.qs;
-    const Real qs = body.qs + hw * body.qc;
-    const Real inv_length = 1 / std::sqrt(qc * qc + qs * qs);
+    const SolverReal qc = body.qc - hw * body.qs;
+    const SolverReal qs = body.qs + hw * body.qc;
+    const SolverReal inv_length = 1 / std::sqrt(qc * qc + qs * qs);
     body.qc = qc * inv_length;
     body.qs = qs * inv_length;
   }
@@ -87,12 +87,12 @@ void integrate_positions(std::span<SolverBody> bodies, Real h) {
 void warm_start_one(SolverBody* bodies, ContactConstraint& c) {
   SolverBody& a = bodies[c.body_a];
   SolverBody& b = bodies[c.body_b];
-  const Real tx = c.ny, ty = -c.nx;
-  Real vax = a.vx, vay = a.vy, wa = a.w, vbx = b.vx, vby = b.vy, wb = b.w;
+  const SolverReal tx = c.ny, ty = -c.nx;
+  SolverReal vax = a.vx, vay = a.vy, wa = a.w, vbx = b.vx, vby = b.vy, wb = b.w;
   for (int j = 0; j < 2; ++j) {
     const ContactConstraintPoint& p = c.points[j];
-    const Real px = p.normal_impulse * c.nx + p.tangent_impulse * tx;
-    const Real py = p.normal_impulse * c.ny + p.tangent_impulse * ty;
+    const SolverReal px = p.normal_impulse * c.nx + p.tangent_impulse * tx;
+    const SolverReal py = p.normal_impulse * c.ny + p.tangent_impulse * ty;
     wa -= c.inv_inertia_a * (p.ax * py - p.ay * px);
     vax -= c.inv_mass_a * px;
     vay -= c.inv_mass_a * py;
@@ -104,14 +104,15 @@ void warm_start_one(SolverBody* bodies, ContactConstraint& c) {
   store_velocity(b, c.inv_mass_b, c.inv_inertia_b, vbx, vby, wb);
 }
 
-void solve_one(SolverBody* bodies, ContactConstraint& c, Real inv_h, Real max_push, bool use_bias) {
+void solve_one(SolverBody* bodies, ContactConstraint& c, SolverReal inv_h, SolverReal max_push,
+               bool use_bias) {
   SolverBody& a = bodies[c.body_a];
   SolverBody& b = bodies[c.body_b];
-  const Real ma = c.inv_mass_a, ia = c.inv_inertia_a, mb = c.inv_mass_b, ib = c.inv_inertia_b;
-  Real vax = a.vx, vay = a.vy, wa = a.w, vbx = b.vx, vby = b.vy, wb = b.w;
-  const Real dpx = b.dpx - a.dpx, dpy = b.dpy - a.dpy;
-  const Real nx = c.nx, ny = c.ny;
-  const auto apply = [&](const ContactConstraintPoint& p, Real px, Real py) {
+  const SolverReal ma = c.inv_mass_a, ia = c.inv_inertia_a, mb = c.inv_mass_b, ib = c.inv_inertia_b;
+  SolverReal vax = a.vx, vay = a.vy, wa = a.w, vbx = b.vx, vby = b.vy, wb = b.w;
+  const SolverReal dpx = b.dpx - a.dpx, dpy = b.dpy - a.dpy;
+  const SolverReal nx = c.nx, ny = c.ny;
+  const auto apply = [&](const ContactConstraintPoint& p, SolverReal px, SolverReal py) {
     vax -= ma * px;
     vay -= ma * py;
     wa -= ia * (p.ax * py - p.ay * px);
@@ -122,10 +123,10 @@ void solve_one(SolverBody* bodies, ContactConstraint& c, Real inv_h, Real max_pu
   for (int j = 0; j < 2; ++j) {
     ContactConstraintPoint& p = c.points[j];
     // Separation now: anchors moved with their bodies since the step began.
-    const Real prax = a.qc * p.ax - a.qs * p.ay, pray = a.qs * p.ax + a.qc * p.ay;
-    const Real prbx = b.qc * p.bx - b.qs * p.by, prby = b.qs * p.bx + b.qc * p.by;
-    const Real s = (dpx + prbx - prax) * nx + (dpy + prby - pray) * ny + p.base_separation;
-    Real bias = 0, mass_scale = 1, impulse_scale = 0;
+    const SolverReal prax = a.qc * p.ax - a.qs * p.ay, pray = a.qs * p.ax + a.qc * p.ay;
+    const SolverReal prbx = b.qc * p.bx - b.qs * p.by, prby = b.qs * p.bx + b.qc * p.by;
+    const SolverReal s = (dpx + prbx - prax) * nx + (dpy + prby - pray) * ny + p.base_separation;
+    SolverReal bias = 0, mass_scale = 1, impulse_scale = 0;
     if (s > 0) {
       bias = s * inv_h;  // speculative: close the gap in this substep, no more
     } else if (use_bias) {
@@ -133,25 +134,27 @@ void solve_one(SolverBody* bodies, ContactConstraint& c, Real inv_h, Real max_pu
       mass_scale = c.mass_scale;
       impulse_scale = c.impulse_scale;
     }
-    const Real dvx = (vbx - wb * p.by) - (vax - wa * p.ay);
-    const Real dvy = (vby + wb * p.bx) - (vay + wa * p.ax);
-    const Real vn = dvx * nx + dvy * ny;
-    Real impulse = -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
-    const Real accumulated = smax(p.normal_impulse + impulse, Real{0});
+    const SolverReal dvx = (vbx - wb * p.by) - (vax - wa * p.ay);
+    const SolverReal dvy = (vby + wb * p.bx) - (vay + wa * p.ax);
+    const SolverReal vn = dvx * nx + dvy * ny;
+    SolverReal impulse =
+        -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
+    const SolverReal accumulated = smax(p.normal_impulse + impulse, SolverReal{0});
     impulse = accumulated - p.normal_impulse;
     p.normal_impulse = accumulated;
     p.max_normal_impulse = smax(p.max_normal_impulse, impulse);
     apply(p, impulse * nx, impulse * ny);
   }
-  const Real tx = ny, ty = -nx;
+  const SolverReal tx = ny, ty = -nx;
   for (int j = 0; j < 2; ++j) {
     ContactConstraintPoint& p = c.points[j];
-    const Real dvx = (vbx - wb * p.by) - (vax - wa * p.ay);
-    const Real dvy = (vby + wb * p.bx) - (vay + wa * p.ax);
-    const Real vt = dvx * tx + dvy * ty;
-    const Real limit = c.friction * p.normal_impulse;
-    const Real accumulated = smin(smax(p.tangent_impulse - p.tangent_mass * vt, -limit), limit);
-    const Real impulse = accumulated - p.tangent_impulse;
+    const SolverReal dvx = (vbx - wb * p.by) - (vax - wa * p.ay);
+    const SolverReal dvy = (vby + wb * p.bx) - (vay + wa * p.ax);
+    const SolverReal vt = dvx * tx + dvy * ty;
+    const SolverReal limit = c.friction * p.normal_impulse;
+    const SolverReal accumulated =
+        smin(smax(p.tangent_impulse - p.tangent_mass * vt, -limit), limit);
+    const SolverReal impulse = accumulated - p.tangent_impulse;
     p.tangent_impulse = accumulated;
     apply(p, impulse * tx, impulse * ty);
   }
@@ -159,7 +162,7 @@ void solve_one(SolverBody* bodies, ContactConstraint& c, Real inv_h, Real max_pu
   store_velocity(b, c.inv_mass_b, c.inv_inertia_b, vbx, vby, wb);
 }
 
-void restitution_one(SolverBody* bodies, ContactConstraint& c, Real threshold) {
+void restitution_one(SolverBody* bodies, ContactConstraint& c, SolverReal threshold) {
   if (c.restitution == 0) return;
   SolverBody& a = bodies[c.body_a];
   SolverBody& b = bodies[c.body_b];
@@ -167,15 +170,15 @@ void restitution_one(SolverBody* bodies, ContactConstraint& c, Real threshold) {
     ContactConstraintPoint& p = c.points[j];
     // Only points that approached fast enough and actually pushed bounce.
     if (p.relative_velocity > -threshold || p.max_normal_impulse == 0) continue;
-    const Real dvx = (b.vx - b.w * p.by) - (a.vx - a.w * p.ay);
-    const Real dvy = (b.vy + b.w * p.bx) - (a.vy + a.w * p.ax);
-    const Real vn = dvx * c.nx + dvy * c.ny;
-    Real impulse = -p.normal_mass * (vn + c.restitution * p.relative_velocity);
-    const Real accumulated = smax(p.normal_impulse + impulse, Real{0});
+    const SolverReal dvx = (b.vx - b.w * p.by) - (a.vx - a.w * p.ay);
+    const SolverReal dvy = (b.vy + b.w * p.bx) - (a.vy + a.w * p.ax);
+    const SolverReal vn = dvx * c.nx + dvy * c.ny;
+    SolverReal impulse = -p.normal_mass * (vn + c.restitution * p.relative_velocity);
+    const SolverReal accumulated = smax(p.normal_impulse + impulse, SolverReal{0});
     impulse = accumulated - p.normal_impulse;
     p.normal_impulse = accumulated;
     p.max_normal_impulse = smax(p.max_normal_impulse, impulse);
-    const Real px = impulse * c.nx, py = impulse * c.ny;
+    const SolverReal px = impulse * c.nx, py = impulse * c.ny;
     a.vx -= c.inv_mass_a * px;
     a.vy -= c.inv_mass_a * py;
     a.w -= c.inv_inertia_a * (p.ax * py - p.ay * px);

@@ -7,12 +7,13 @@
 
 namespace mink::detail {
 
-// Explicitly 32-byte aligned: without AVX enabled GCC would align it to 16 only, and the AVX2
-// build of the kernels uses aligned loads.
-typedef double Wide __attribute__((vector_size(32), aligned(32)));
+// One AVX2 register of solver numbers. Explicitly 32-byte aligned: without AVX enabled GCC
+// would align it to 16 only, and the AVX2 build of the kernels uses aligned loads.
+typedef SolverReal Wide __attribute__((vector_size(32), aligned(32)));
+inline constexpr int kWideLanes = 32 / sizeof(SolverReal);
 
 struct WideConstraint {
-  std::int32_t body_a[4], body_b[4];
+  std::int32_t body_a[kWideLanes], body_b[kWideLanes];
   Wide inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
   Wide nx, ny, friction, bias_rate, mass_scale, impulse_scale;
   Wide dx, dy;  // centre of A minus centre of B: anchor on B = anchor on A + (dx, dy)
@@ -29,19 +30,20 @@ struct WideMaxImpulse {
 // One constraint at a time (the overflow, and the whole solve in scalar mode).
 void integrate_velocities(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
                           const SolverSettings& settings);
-void integrate_positions(std::span<SolverBody> bodies, Real h);
+void integrate_positions(std::span<SolverBody> bodies, SolverReal h);
 void warm_start_one(SolverBody* bodies, ContactConstraint& c);
 // Both points are always processed: a one-point manifold's second point has zero masses and
 // impulses, so it changes nothing, and the lanes of the wide path stay uniform.
-void solve_one(SolverBody* bodies, ContactConstraint& c, Real inv_h, Real max_push, bool use_bias);
-void restitution_one(SolverBody* bodies, ContactConstraint& c, Real threshold);
+void solve_one(SolverBody* bodies, ContactConstraint& c, SolverReal inv_h, SolverReal max_push,
+               bool use_bias);
+void restitution_one(SolverBody* bodies, ContactConstraint& c, SolverReal threshold);
 
-// Four at a time, over a colour's wide constraints [begin, end).
+// kWideLanes at a time, over a colour's wide constraints [begin, end).
 void warm_start_wide(SolverBody* bodies, WideConstraint* begin, WideConstraint* end);
 // `max_impulse` (one per wide constraint) tracks each point's largest impulse for restitution;
 // null when nothing bounces.
 void solve_wide(SolverBody* bodies, WideConstraint* begin, WideConstraint* end,
-                WideMaxImpulse* max_impulse, Real inv_h, Real max_push, bool use_bias);
+                WideMaxImpulse* max_impulse, SolverReal inv_h, SolverReal max_push, bool use_bias);
 // Writes `constraint` into lane `lane` of `wide`.
 void pack(WideConstraint& wide, int lane, const ContactConstraint& constraint);
 

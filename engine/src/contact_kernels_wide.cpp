@@ -1,4 +1,4 @@
-// The soft-step contact kernels four constraints at a time, one per SIMD lane (GCC vector
+// The soft-step contact kernels kWideLanes constraints at a time, one per SIMD lane (GCC vector
 // extensions), compiled for AVX2 and for baseline x86-64 and picked at load time. No fused
 // multiply-add is used, so both builds and the one-at-a-time kernels give bitwise equal results.
 
@@ -21,11 +21,11 @@ namespace mink::detail {
 namespace {
 
 struct WideBody {
-  Wide vx, vy, w, dpx, dpy, qc, qs;
+  Wide vx, vy, w, turn, dpx, dpy, qc, qs;  // a solver body's fields, in its order
 };
 
-inline Wide splat(Real x) {
-  return Wide{x, x, x, x};
+inline Wide splat(SolverReal x) {
+  return x - Wide{};
 }
 inline Wide wmax(Wide a, Wide b) {
   return a > b ? a : b;
@@ -34,29 +34,84 @@ inline Wide wmin(Wide a, Wide b) {
   return a < b ? a : b;
 }
 
+// A body's solver record is one register wide; kWideLanes of them side by side are a square
+// matrix whose transpose holds one field per register.
+static_assert(sizeof(SolverBody) == sizeof(Wide));
+typedef std::int32_t WideIndex __attribute__((vector_size(32)));
+
+inline Wide load_row(const SolverBody& b) {
+  Wide row;
+  __builtin_memcpy(&row, &b, sizeof row);
+  return row;
+}
+
+// The 8 x 8 transpose of single-precision rows, in three rounds of shuffles that stay within
+// the rules of AVX2's in-lane unpacks and 128-bit permutes. Its own inverse.
+inline void transpose8(Wide (&m)[8]) {
+  if constexpr (kWideLanes == 8) {
+    Wide t[8], u[8];
+    for (int i = 0; i < 8; i += 2) {
+      t[i] = __builtin_shuffle(m[i], m[i + 1], WideIndex{0, 8, 1, 9, 4, 12, 5, 13});
+      t[i + 1] = __builtin_shuffle(m[i], m[i + 1], WideIndex{2, 10, 3, 11, 6, 14, 7, 15});
+    }
+    for (int i = 0; i < 8; i += 4) {
+      u[i] = __builtin_shuffle(t[i], t[i + 2], WideIndex{0, 1, 8, 9, 4, 5, 12, 13});
+      u[i + 1] = __builtin_shuffle(t[i], t[i + 2], WideIndex{2, 3, 10, 11, 6, 7, 14, 15});
+      u[i + 2] = __builtin_shuffle(t[i + 1], t[i + 3], WideIndex{0, 1, 8, 9, 4, 5, 12, 13});
+      u[i + 3] = __builtin_shuffle(t[i + 1], t[i + 3], WideIndex{2, 3, 10, 11, 6, 7, 14, 15});
+    }
+    for (int i = 0; i < 4; ++i) {
+      m[i] = __builtin_shuffle(u[i], u[i + 4], WideIndex{0, 1, 2, 3, 8, 9, 10, 11});
+      m[i + 4] = __builtin_shuffle(u[i], u[i + 4], WideIndex{4, 5, 6, 7, 12, 13, 14, 15});
+    }
+  }
+}
+
 inline WideBody gather(const SolverBody* bodies, const std::int32_t* index) {
-  const SolverBody& b0 = bodies[index[0]];
-  const SolverBody& b1 = bodies[index[1]];
-  const SolverBody& b2 = bodies[index[2]];
-  const SolverBody& b3 = bodies[index[3]];
-  return {Wide{b0.vx, b1.vx, b2.vx, b3.vx},     Wide{b0.vy, b1.vy, b2.vy, b3.vy},
-          Wide{b0.w, b1.w, b2.w, b3.w},         Wide{b0.dpx, b1.dpx, b2.dpx, b3.dpx},
-          Wide{b0.dpy, b1.dpy, b2.dpy, b3.dpy}, Wide{b0.qc, b1.qc, b2.qc, b3.qc},
-          Wide{b0.qs, b1.qs, b2.qs, b3.qs}};
+  WideBody w;
+  if constexpr (kWideLanes == 8) {
+    Wide m[8];
+    for (int lane = 0; lane < 8; ++lane) m[lane] = load_row(bodies[index[lane]]);
+    transpose8(m);
+    w = {m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7]};
+  } else {
+    for (int lane = 0; lane < kWideLanes; ++lane) {
+      const SolverBody& b = bodies[index[lane]];
+      w.vx[lane] = b.vx;
+      w.vy[lane] = b.vy;
+      w.w[lane] = b.w;
+      w.turn[lane] = b.turn;
+      w.dpx[lane] = b.dpx;
+      w.dpy[lane] = b.dpy;
+      w.qc[lane] = b.qc;
+      w.qs[lane] = b.qs;
+    }
+  }
+  return w;
 }
 
 // Only velocities change while solving, and only those of bodies the solver can move: a
 // kinematic body or the still body (no inverse mass or inertia) may sit in several
 // constraints of a colour, which other threads solve at the same time, so it is never
-// written.
+// written. A movable body is in one lane of a colour only, so its whole record may be
+// rewritten (the fields besides the velocities go back unchanged).
 inline void scatter(SolverBody* bodies, const std::int32_t* index, const WideBody& w,
                     const Wide& inv_mass, const Wide& inv_inertia) {
-  for (int lane = 0; lane < 4; ++lane) {
-    if (inv_mass[lane] == 0 && inv_inertia[lane] == 0) continue;
-    SolverBody& b = bodies[index[lane]];
-    b.vx = w.vx[lane];
-    b.vy = w.vy[lane];
-    b.w = w.w[lane];
+  if constexpr (kWideLanes == 8) {
+    Wide m[8] = {w.vx, w.vy, w.w, w.turn, w.dpx, w.dpy, w.qc, w.qs};
+    transpose8(m);
+    for (int lane = 0; lane < 8; ++lane) {
+      if (inv_mass[lane] == 0 && inv_inertia[lane] == 0) continue;
+      __builtin_memcpy(static_cast<void*>(&bodies[index[lane]]), &m[lane], sizeof(SolverBody));
+    }
+  } else {
+    for (int lane = 0; lane < kWideLanes; ++lane) {
+      if (inv_mass[lane] == 0 && inv_inertia[lane] == 0) continue;
+      SolverBody& b = bodies[index[lane]];
+      b.vx = w.vx[lane];
+      b.vy = w.vy[lane];
+      b.w = w.w[lane];
+    }
   }
 }
 
@@ -65,7 +120,7 @@ inline void scatter(SolverBody* bodies, const std::int32_t* index, const WideBod
 template <bool Track>
 __attribute__((always_inline)) inline void solve_wide_impl(
     SolverBody* bodies, WideConstraint* begin, WideConstraint* end, WideMaxImpulse* max_impulse,
-    Real inv_h_scalar, Real max_push_scalar, bool use_bias) {
+    SolverReal inv_h_scalar, SolverReal max_push_scalar, bool use_bias) {
   const Wide zero = splat(0), one = splat(1), inv_h = splat(inv_h_scalar),
              max_push = splat(-max_push_scalar);
   for (WideConstraint* c = begin; c != end; ++c) {
@@ -156,7 +211,7 @@ MINK_WIDE_KERNEL void warm_start_wide(SolverBody* bodies, WideConstraint* begin,
 }
 
 MINK_WIDE_KERNEL void solve_wide(SolverBody* bodies, WideConstraint* begin, WideConstraint* end,
-                                 WideMaxImpulse* max_impulse, Real inv_h, Real max_push,
+                                 WideMaxImpulse* max_impulse, SolverReal inv_h, SolverReal max_push,
                                  bool use_bias) {
   if (max_impulse) {
     solve_wide_impl<true>(bodies, begin, end, max_impulse, inv_h, max_push, use_bias);

@@ -23,10 +23,10 @@
 //
 // Speed: Gauss-Seidel is a chain of dependent updates, so one constraint at a time the CPU
 // mostly waits on latency. As in Box2D v3, the constraint graph is coloured so that no two
-// constraints of a colour share a moving body; a colour is then solved four constraints at a
+// constraints of a colour share a moving body; a colour is then solved eight constraints at a
 // time in SIMD lanes (GCC vector extensions, compiled for AVX2 and for baseline x86-64 and
 // picked at load time). No fused multiply-add is used, so both builds and the one-at-a-time
-// twin give bitwise equal results. Bodies and constraints are flat arrays of doubles, no
+// twin give bitwise equal results. Bodies and constraints are flat arrays of floats, no
 // virtual calls, no allocation once the scratch arrays have grown.
 
 #include "contact_solver.hpp"
@@ -88,7 +88,7 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
   wide_begin_.assign(kColorCount + 1, 0);
   for (std::size_t c = 0; c <= kColorCount; ++c) color_begin_[c + 1] = color_begin_[c] + counts[c];
   for (std::size_t c = 0; c < kColorCount; ++c) {
-    wide_begin_[c + 1] = wide_begin_[c] + (counts[c] + 3) / 4;
+    wide_begin_[c + 1] = wide_begin_[c] + (counts[c] + kWideLanes - 1) / kWideLanes;
   }
   // Slots: position within the colour gives the batch and the lane directly.
   slot_.resize(constraints.size());
@@ -103,7 +103,7 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
       slot_[i] = kScalar | (position - color_begin_[kColorCount]);
     } else {
       const std::uint32_t offset = position - color_begin_[color];
-      slot_[i] = 4 * (wide_begin_[color] + offset / 4) + offset % 4;
+      slot_[i] = kWideLanes * (wide_begin_[color] + offset / kWideLanes) + offset % kWideLanes;
     }
   }
   if (wide) {
@@ -123,7 +123,7 @@ void ContactSolver::set(std::uint32_t index, const ContactConstraint& constraint
   if (slot & kScalar) {
     scalar_[slot & ~kScalar] = constraint;
   } else {
-    pack(wide_[slot / 4], static_cast<int>(slot % 4), constraint);
+    pack(wide_[slot / kWideLanes], static_cast<int>(slot % kWideLanes), constraint);
     if (constraint.restitution > 0) found.restitution.emplace_back(slot, constraint);
   }
 }
@@ -141,9 +141,11 @@ void ContactSolver::finish() {
   padding.mass_scale = 1;
   for (std::size_t c = 0; c < kColorCount; ++c) {
     const std::uint32_t count = color_begin_[c + 1] - color_begin_[c];
-    if (count % 4 == 0) continue;
+    if (count % kWideLanes == 0) continue;
     WideConstraint& w = wide_[wide_begin_[c + 1] - 1];
-    for (int lane = static_cast<int>(count % 4); lane < 4; ++lane) pack(w, lane, padding);
+    for (int lane = static_cast<int>(count % kWideLanes); lane < kWideLanes; ++lane) {
+      pack(w, lane, padding);
+    }
   }
   // Bounce in colour order, as the one-at-a-time twin does.
   std::sort(restitution_.begin(), restitution_.end(),
@@ -160,10 +162,10 @@ void ContactSolver::impulses(std::uint32_t index, Real normal[2], Real tangent[2
     }
     return;
   }
-  const WideConstraint& w = wide_[slot / 4];
+  const WideConstraint& w = wide_[slot / kWideLanes];
   for (int j = 0; j < 2; ++j) {
-    normal[j] = w.points[j].normal_impulse[slot % 4];
-    tangent[j] = w.points[j].tangent_impulse[slot % 4];
+    normal[j] = w.points[j].normal_impulse[slot % kWideLanes];
+    tangent[j] = w.points[j].tangent_impulse[slot % kWideLanes];
   }
 }
 
@@ -258,7 +260,7 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
     const std::uint32_t begin = st.begin + block * st.block_size;
     const std::uint32_t end = std::min(st.end, begin + st.block_size);
     SolverBody* body_data = x.bodies.data();
-    const Real inv_h = x.settings->inv_h, max_push = x.settings->contact_push_max_velocity;
+    const SolverReal inv_h = x.settings->inv_h, max_push = x.settings->contact_push_max_velocity;
     const bool overflow = st.color == kColorCount;
     WideConstraint* wide = self.wide_.data();
     WideMaxImpulse* max_data = self.max_impulse_.empty() ? nullptr : self.max_impulse_.data();
@@ -310,13 +312,13 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
   };
   if (!bouncy_) return;
   // Restitution, once per step and rare: one at a time, colours first, then the overflow.
-  const Real threshold = settings.restitution_threshold;
+  const SolverReal threshold = settings.restitution_threshold;
   for (auto& [slot, c] : restitution_) {
-    WideConstraint& w = wide_[slot / 4];
-    const int lane = static_cast<int>(slot % 4);
+    WideConstraint& w = wide_[slot / kWideLanes];
+    const int lane = static_cast<int>(slot % kWideLanes);
     for (int j = 0; j < 2; ++j) {
       c.points[j].normal_impulse = w.points[j].normal_impulse[lane];
-      c.points[j].max_normal_impulse = max_data[slot / 4].point[j][lane];
+      c.points[j].max_normal_impulse = max_data[slot / kWideLanes].point[j][lane];
     }
     restitution_one(body_data, c, threshold);
     for (int j = 0; j < 2; ++j) w.points[j].normal_impulse[lane] = c.points[j].normal_impulse;

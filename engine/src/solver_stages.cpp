@@ -199,11 +199,31 @@ void WorldState::write_back(std::uint32_t solver_index) {
   b.previous_origin = b.origin;
   b.previous_rotation = b.rotation;
   b.moved_step = step_count;
-  b.velocity = Vec2(sb.vx, sb.vy);
-  b.angular_velocity = sb.w;
-  b.center += Vec2(sb.dpx, sb.dpy);
-  const Real c = sb.qc * b.rotation.cos - sb.qs * b.rotation.sin;
-  const Real s = sb.qs * b.rotation.cos + sb.qc * b.rotation.sin;
+  Real qc = sb.qc, qs = sb.qs;
+  if (b.type == BodyType::kinematic) {
+    // A kinematic body's motion is prescribed, not solved: it moves in double precision as
+    // the substeps move it (the solver's single-precision copy only served its contacts), so
+    // it arrives exactly where its velocity takes it.
+    const Real h = dt / substeps;
+    const Real hw = h * b.angular_velocity;
+    Vec2 moved(0, 0);
+    qc = 1;
+    qs = 0;
+    for (int i = 0; i < substeps; ++i) {
+      moved += h * b.velocity;
+      const Real c = qc - hw * qs, s = qs + hw * qc;
+      const Real inv_length = 1 / std::sqrt(c * c + s * s);
+      qc = c * inv_length;
+      qs = s * inv_length;
+    }
+    b.center += moved;
+  } else {
+    b.velocity = Vec2(sb.vx, sb.vy);
+    b.angular_velocity = sb.w;
+    b.center += Vec2(sb.dpx, sb.dpy);
+  }
+  const Real c = qc * b.rotation.cos - qs * b.rotation.sin;
+  const Real s = qs * b.rotation.cos + qc * b.rotation.sin;
   const Real inv_length = 1 / std::sqrt(c * c + s * s);
   b.rotation = {c * inv_length, s * inv_length};
   b.origin = b.center - b.rotation.apply(b.local_center);

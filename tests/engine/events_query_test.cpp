@@ -140,8 +140,8 @@ TEST(Queries, AabbQueryFindsExactlyTheOverlappingHulls) {
   const Real tolerance = 1e-9;
   int overlapping = 0;
   int apart_but_boxes_overlap = 0;
-  for (int i = 0; i < 100; ++i) {
-    const Vec2 lower(-12 + 20 * std::fmod(i * 0.618034, 1.0), 0.1 * i);
+  for (int i = 0; i < 200; ++i) {
+    const Vec2 lower(-12 + 20 * std::fmod(i * 0.618034, 1.0), 0.05 * i);
     const Aabb box{lower, lower + Vec2(1.5, 0.7)};
     const std::vector<ShapeId> found = world.query_aabb(box);
     EXPECT_TRUE(std::is_sorted(found.begin(), found.end(),

@@ -222,7 +222,8 @@ TEST(Wheel, TheMotorReachesItsSpeedWithinItsTorque) {
   world.create_joint(def);
   step_for(world, 1);
   EXPECT_NEAR(world.angular_velocity(fast), -10, 0.1);
-  EXPECT_NEAR(world.joint_torque(fast_joint), 0, 1e-6);  // at speed, nothing to overcome
+  // At speed, nothing to overcome (to the solver's single precision).
+  EXPECT_NEAR(world.joint_torque(fast_joint), 0, 1e-5);
   const Real expected = -torque / world.rotational_inertia(slow) * 1.0;
   EXPECT_NEAR(world.angular_velocity(slow), expected, 0.01 * std::abs(expected));
   RecordProperty("fast", std::to_string(world.angular_velocity(fast)));

@@ -33,8 +33,12 @@ struct Box2dV3Run {
   std::string_view name;
   std::size_t bodies, shapes, joints;
   std::vector<std::size_t> touching;  // after steps 50, 100, ..., to the end of the run
-  int short_steps;                    // the shortened run that `make test` compares
-  std::string_view mismatch;          // why the short run is skipped (empty: it is not)
+  // The shortened run that `make test` compares. Where a scene starts with bodies falling
+  // (rain's first ragdolls land near step 200), it runs past the first landings: the count
+  // at the first checkpoint after them swings by tens of percent with a step's difference in
+  // when they land.
+  int short_steps;
+  std::string_view mismatch;  // why the short run is skipped (empty: it is not)
 };
 
 const std::vector<Box2dV3Run>& box2d_v3_runs() {
@@ -53,7 +57,7 @@ const std::vector<Box2dV3Run>& box2d_v3_runs() {
       {"many_pyramids", 22001, 22020, 0, {58000, 58000, 58000, 58000}, 50, ""},
       {"rain", 11001, 15505, 10000,
        {0, 0, 0, 1052, 4141, 7481, 8599, 8418, 7898, 7955, 8191, 8342, 7830, 8085, 8287, 8106,
-        7842, 7942, 8029, 8336}, 250, ""},
+        7842, 7942, 8029, 8336}, 300, ""},
       {"smash", 9601, 9601, 0, {0, 15771, 16141, 4280, 2559, 1893}, 100,
        "the block smashes through the wall of sleeping boxes as in Box2D v3, but over the first "
        "100 steps ours keeps 9% more contacts touching (3.7% more over its 300 steps)"},
