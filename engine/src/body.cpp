@@ -63,7 +63,9 @@ void WorldState::compact_awake_list() {
     }
   }
   awake_list.resize(kept);
-  std::sort(awake_list.begin(), awake_list.end());
+  if (!std::is_sorted(awake_list.begin(), awake_list.end())) {
+    std::sort(awake_list.begin(), awake_list.end());
+  }
   // A slot freed and reused within one step can be listed twice.
   awake_list.erase(std::unique(awake_list.begin(), awake_list.end()), awake_list.end());
 }

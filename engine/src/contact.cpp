@@ -4,6 +4,7 @@
 #include "contact.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -305,18 +306,27 @@ bool WorldState::update_manifold(Contact& c) const {
 // less than a tenth of the linear slop since its manifold was computed keeps the manifold's
 // features and only has its separations measured again (as persistent-manifold engines do):
 // resting stacks then cost a few multiplies per point instead of a collision.
+void WorldState::mark_step_contacts(const Body& body) {
+  for (const std::uint32_t ci : body.contacts) {
+    step_contact_marks[ci >> 6] |= std::uint64_t{1} << (ci & 63);
+  }
+}
+
+void WorldState::collect_step_contacts() {
+  step_contacts.clear();
+  for (std::size_t word = 0; word < step_contact_marks.size(); ++word) {
+    for (std::uint64_t bits = step_contact_marks[word]; bits != 0; bits &= bits - 1) {
+      step_contacts.push_back(static_cast<std::uint32_t>(word * 64 + std::countr_zero(bits)));
+    }
+  }
+}
+
 void WorldState::collide() {
   // The contacts of moving bodies, in contact order (the order events and the solver use).
   compact_awake_list();
-  step_contacts.clear();
-  for (const std::uint32_t i : awake_list) {
-    for (const std::uint32_t ci : bodies[i].contacts) {
-      if (contacts[ci].collided_step == step_count) continue;
-      contacts[ci].collided_step = step_count;
-      step_contacts.push_back(ci);
-    }
-  }
-  std::sort(step_contacts.begin(), step_contacts.end());
+  step_contact_marks.assign((contacts.size() + 63) / 64, 0);
+  for (const std::uint32_t i : awake_list) mark_step_contacts(bodies[i]);
+  collect_step_contacts();
   counters.collided_contacts = step_contacts.size();
   // Manifolds in parallel (each writes only its own contact), then what is shared (colours,
   // the touching count, events) in contact order, for the contacts whose state changed.

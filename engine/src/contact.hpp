@@ -36,7 +36,6 @@ struct Contact {
   // Fastest normal approach over the points before the solve, and where (hit events only).
   Real approach_speed = 0;
   Vec2 approach_point{0, 0};
-  std::uint64_t collided_step = ~std::uint64_t{0};  // dedupes a step's visits from two bodies
   // The constraint graph colour while the contact has points, and whether each body blocked
   // it (a dynamic body) when it was given.
   std::uint8_t color = 255;

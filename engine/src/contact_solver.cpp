@@ -94,9 +94,11 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
   slot_.resize(constraints.size());
   std::array<std::uint32_t, kColorCount + 1> fill{};
   for (std::size_t c = 0; c <= kColorCount; ++c) fill[c] = color_begin_[c];
+  order_.resize(constraints.size());
   for (std::uint32_t i = 0; i < constraints.size(); ++i) {
     const std::uint8_t color = color_of_[i];
     const std::uint32_t position = fill[color]++;
+    order_[position] = i;
     if (!wide) {
       slot_[i] = kScalar | position;
     } else if (color == kColorCount) {

@@ -121,6 +121,10 @@ class ContactSolver {
   // Constraint `index` (as passed to begin), once each, from any worker (each index writes
   // only its own slot), then finish().
   void set(std::uint32_t index, const ContactConstraint& constraint, std::uint32_t worker);
+  // The constraints (indices as passed to begin) in the order of their slots: colour by
+  // colour, each colour's lanes in turn. Setting them in this order fills one SIMD batch
+  // after another, so the batches being written stay in cache.
+  std::span<const std::uint32_t> slot_order() const noexcept { return order_; }
   void finish();
   // `joints`, when given, runs its part of each stage before the contacts.
   // The stages run on the task runner's workers, each colour split into blocks; the result
@@ -142,6 +146,7 @@ class ContactSolver {
   // into scalar_ for the overflow. Scalar mode: kScalar | index into scalar_ (colour order,
   // then the overflow), so set() and impulses() need not ask which mode they are in.
   std::vector<std::uint32_t> slot_;
+  std::vector<std::uint32_t> order_;  // constraint indices by slot
   std::vector<ContactConstraint> scalar_;
   std::vector<std::uint32_t> color_begin_;  // colour positions, one past the last at the end
   std::vector<WideConstraint> wide_;

@@ -93,14 +93,8 @@ void WorldState::update_islands() {
   std::sort(fell_asleep.begin(), fell_asleep.end());
   // Contacts among the bodies this pass woke join the step (with the manifolds they slept with).
   if (!woken.empty()) {
-    for (const std::uint32_t i : woken) {
-      for (const std::uint32_t ci : bodies[i].contacts) {
-        if (contacts[ci].collided_step == step_count) continue;
-        contacts[ci].collided_step = step_count;
-        step_contacts.push_back(ci);
-      }
-    }
-    std::sort(step_contacts.begin(), step_contacts.end());
+    for (const std::uint32_t i : woken) mark_step_contacts(bodies[i]);
+    collect_step_contacts();
   }
   counters.islands = islands;
 }

@@ -175,18 +175,21 @@ void WorldState::prepare_contacts() {
     }
     contact_solver.set(r, k, worker);
   };
-  // Each constraint is built into its own slot, so they are built in parallel.
-  tasks.parallel_for(static_cast<std::uint32_t>(constraint_contacts.size()), 256,
-                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
-                       for (std::uint32_t r = begin; r < end; ++r) {
-                         // Constraints go in body order, so their contacts are scattered
-                         // through memory: ask for those a few ahead early.
-                         if (r + kPrefetchAhead < end) {
-                           prefetch_contact(contacts[constraint_contacts[r + kPrefetchAhead]]);
-                         }
-                         build(r, worker);
-                       }
-                     });
+  // Each constraint is built into its own slot, so they are built in parallel, in slot order
+  // (one SIMD batch filled after another).
+  const std::span<const std::uint32_t> order = contact_solver.slot_order();
+  tasks.parallel_for(
+      static_cast<std::uint32_t>(order.size()), 256,
+      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
+        for (std::uint32_t k = begin; k < end; ++k) {
+          // Their contacts are scattered through memory: ask for those a few
+          // ahead early.
+          if (k + kPrefetchAhead < end) {
+            prefetch_contact(contacts[constraint_contacts[order[k + kPrefetchAhead]]]);
+          }
+          build(order[k], worker);
+        }
+      });
   contact_solver.finish();
 
   counters.constraint_colors = contact_solver.color_count();

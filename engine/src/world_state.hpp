@@ -47,7 +47,10 @@ struct WorldState {
   // Bodies that may be awake (every awake body is here; stale entries are dropped once a
   // step): a step visits these and their contacts only, so a sleeping island costs nothing.
   std::vector<std::uint32_t> awake_list;
-  std::vector<std::uint32_t> step_contacts;   // contacts of moving bodies this step, in order
+  std::vector<std::uint32_t> step_contacts;  // contacts of moving bodies this step, in order
+  // One bit per contact: marked from the moving bodies' contact lists and read off in order
+  // into step_contacts (no sort, and the contacts of sleeping bodies are never touched).
+  std::vector<std::uint64_t> step_contact_marks;
   std::vector<std::uint8_t> collide_changes;  // per step contact: what collide() must update
 
   std::vector<ContactBeginEvent> begin_events;
@@ -123,6 +126,9 @@ struct WorldState {
   void destroy_contacts_between(std::uint32_t body_a, std::uint32_t body_b);
   bool should_make_contact(std::uint32_t shape_a, std::uint32_t shape_b) const;
   void update_pairs();
+  // Marks the body's contacts for this step; collect_step_contacts lists the marked ones.
+  void mark_step_contacts(const detail::Body& body);
+  void collect_step_contacts();
   bool update_manifold(detail::Contact& contact) const;
   void collide();
   // sensor.cpp
