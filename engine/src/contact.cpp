@@ -212,7 +212,11 @@ void measure_approach(Contact& c, const Body& a, const Body& b) {
 bool WorldState::update_manifold(Contact& c) const {
   const Real touching_distance = 4 * def.linear_slop;
   const bool reuse = def.reuse_manifolds;
-  const Real reuse_tolerance = 0.1 * def.linear_slop;
+  // A pair not yet touching must not miss its contact: it may move at most the touching
+  // distance.
+  const Real reuse_tolerance = c.touching
+                                   ? def.manifold_reuse_distance
+                                   : std::min(def.manifold_reuse_distance, touching_distance);
   const Body& body_a = bodies[c.body_a];
   const Body& body_b = bodies[c.body_b];
   const Shape& shape_a = shapes[c.shape_a];

@@ -575,9 +575,12 @@ constexpr SceneField<WorldDef> kWorldFields[] = {
                                             "most steps one World::advance call runs",
                                             {1, 1'000'000}),
     field<&WorldDef::simd_solver>("simd_solver", FieldKind::boolean,
-                                  "solve four contacts at a time (same results)"),
+                                  "solve eight contacts at a time (same results)"),
     field<&WorldDef::reuse_manifolds>("reuse_manifolds", FieldKind::boolean,
                                       "keep manifolds while a pair barely moves"),
+    field<&WorldDef::manifold_reuse_distance>(
+        "manifold_reuse_distance", FieldKind::real,
+        "m a touching pair may move before its manifold is computed anew", kNonNegative),
 };
 
 constexpr SceneField<BodyDef> kBodyFields[] = {

@@ -51,6 +51,8 @@ void check_world_def(const WorldDef& def) {
           "WorldDef.hit_event_threshold must be finite and non-negative");
   require(std::isfinite(def.linear_slop) && def.linear_slop > 0,
           "WorldDef.linear_slop must be positive and finite");
+  require(std::isfinite(def.manifold_reuse_distance) && def.manifold_reuse_distance >= 0,
+          "WorldDef.manifold_reuse_distance must be finite and non-negative");
   require(std::isfinite(def.max_linear_speed) && def.max_linear_speed > 0,
           "WorldDef.max_linear_speed must be positive and finite");
   require(std::isfinite(def.time_to_sleep) && def.time_to_sleep >= 0,

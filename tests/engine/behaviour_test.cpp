@@ -120,7 +120,8 @@ TEST(Behaviour, EnergyNeverGrowsInZeroGravityCollisions) {
   for (int i = 0; i < 400; ++i) {
     world.step();
     const Real energy = kinetic_energy(world);
-    EXPECT_LE(energy, previous * (1 + 1e-9) + 1e-12) << "step " << i;
+    // Never more than the rounding of single-precision solver velocities.
+    EXPECT_LE(energy, previous * (1 + 1e-6) + 1e-12) << "step " << i;
     previous = energy;
   }
 }

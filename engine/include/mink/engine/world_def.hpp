@@ -59,13 +59,20 @@ struct WorldDef {
   /// advance() runs at most this many steps per call, dropping the rest of a long frame so a
   /// slow frame cannot snowball into ever slower ones.
   int max_steps_per_advance = 8;
-  /// Solve independent contacts four at a time in SIMD lanes. false runs the same order one
+  /// Solve independent contacts eight at a time in SIMD lanes. false runs the same order one
   /// contact at a time (the slow twin; results are bitwise equal).
   bool simd_solver = true;
-  /// Keep a contact's manifold features while the pair's relative pose stays within a tenth of
-  /// the linear slop of where they were found, updating only the separations. false runs the
-  /// narrowphase for every pair every step.
+  /// Keep a contact's manifold features while the pair's relative pose stays within
+  /// manifold_reuse_distance of where they were found, updating only the separations. false
+  /// runs the narrowphase for every pair every step.
   bool reuse_manifolds = true;
+  /// How far (m: the shift of one body relative to the other plus the turn at their extents)
+  /// a touching pair may move before its manifold is computed anew; a pair not yet touching
+  /// gets at most four linear slops (its contact must not be missed). Box2D v3 recycles its
+  /// contacts to the same distance, ten linear slops. Stored points move with their bodies, so
+  /// the separations stay exact; what the distance trades is which features touch: a box
+  /// sliding off an edge finds its new corner this much later.
+  Real manifold_reuse_distance = 0.05;
   /// @name Threads
   /// A step runs its parallel phases (narrowphase, constraint preparation, each colour of the
   /// solver, integration, bounding boxes) on this many workers, the calling thread among them.
