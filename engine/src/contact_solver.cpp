@@ -137,7 +137,7 @@ void ContactSolver::finish() {
   }
   if (!wide_mode_) return;
   // Lanes past the end of each colour's last batch: the still body, no mass, no impulse.
-  ContactConstraint padding;
+  ContactConstraint padding{};
   padding.body_a = padding.body_b = still_;
   padding.nx = 1;
   padding.mass_scale = 1;

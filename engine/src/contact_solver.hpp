@@ -43,23 +43,25 @@ struct SolverBodyParams {
   SolverReal linear_damping = 1, angular_damping = 1;  // factors 1 / (1 + h * damping)
 };
 
+// Constraints are built once per contact per step, each field written: no default values,
+// so a local one costs no stores until its fields are set (ContactConstraint{} is all zero).
 struct ContactConstraintPoint {
-  SolverReal ax = 0, ay = 0, bx = 0, by = 0;  // anchors from each centre of mass, for the step
-  SolverReal base_separation = 0;  // separation minus the anchors' offset along the normal
-  SolverReal normal_mass = 0, tangent_mass = 0;
-  SolverReal normal_impulse = 0, tangent_impulse = 0;
-  SolverReal max_normal_impulse = 0;
-  SolverReal relative_velocity = 0;  // normal approach speed when the step began (restitution)
+  SolverReal ax, ay, bx, by;   // anchors from each centre of mass, for the step
+  SolverReal base_separation;  // separation minus the anchors' offset along the normal
+  SolverReal normal_mass, tangent_mass;
+  SolverReal normal_impulse, tangent_impulse;
+  SolverReal max_normal_impulse;
+  SolverReal relative_velocity;  // normal approach speed when the step began (restitution)
 };
 
 struct ContactConstraint {
-  std::int32_t body_a = 0, body_b = 0;  // indices into the solver body array
-  std::int32_t point_count = 0;
-  SolverReal inv_mass_a = 0, inv_inertia_a = 0, inv_mass_b = 0, inv_inertia_b = 0;
-  SolverReal nx = 0, ny = 0;
-  SolverReal dx = 0, dy = 0;  // centre of A minus centre of B: anchor on B = anchor on A + (dx, dy)
-  SolverReal friction = 0, restitution = 0;
-  SolverReal bias_rate = 0, mass_scale = 1, impulse_scale = 0;  // contact softness
+  std::int32_t body_a, body_b;  // indices into the solver body array
+  std::int32_t point_count;
+  SolverReal inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
+  SolverReal nx, ny;
+  SolverReal dx, dy;  // centre of A minus centre of B: anchor on B = anchor on A + (dx, dy)
+  SolverReal friction, restitution;
+  SolverReal bias_rate, mass_scale, impulse_scale;  // contact softness
   ContactConstraintPoint points[2];
 };
 

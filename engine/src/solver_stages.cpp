@@ -143,35 +143,40 @@ void WorldState::prepare_contacts() {
     k.mass_scale = s.mass_scale;
     k.impulse_scale = s.impulse_scale;
     k.point_count = c.manifold.point_count;
-    const Real tx = k.ny, ty = -k.nx;
     const detail::SolverBody& sa = solver_bodies[static_cast<std::size_t>(k.body_a)];
     const detail::SolverBody& sb = solver_bodies[static_cast<std::size_t>(k.body_b)];
     if (k.point_count < 2) k.points[1] = detail::ContactConstraintPoint{};
+    // Past the anchors (world points less centres, in double so a world far from the origin
+    // loses nothing), everything is small and in the solver's precision.
+    using detail::SolverReal;
+    const SolverReal nx = k.nx, ny = k.ny, tx = ny, ty = -nx;
+    const SolverReal ma = k.inv_mass_a, ia = k.inv_inertia_a, mb = k.inv_mass_b,
+                     ib = k.inv_inertia_b;
     for (int j = 0; j < k.point_count; ++j) {
       const ManifoldPoint& mp = c.manifold.points[static_cast<std::size_t>(j)];
       detail::ContactConstraintPoint& p = k.points[j];
-      p.ax = mp.point.x() - a.cx;
-      p.ay = mp.point.y() - a.cy;
+      const SolverReal ax = static_cast<SolverReal>(mp.point.x() - a.cx);
+      const SolverReal ay = static_cast<SolverReal>(mp.point.y() - a.cy);
       // Through the centre offset, as the wide solver recomputes it (same bits).
-      p.bx = p.ax + k.dx;
-      p.by = p.ay + k.dy;
-      p.base_separation = mp.separation - ((p.bx - p.ax) * k.nx + (p.by - p.ay) * k.ny);
-      const Real rna = p.ax * k.ny - p.ay * k.nx;
-      const Real rnb = p.bx * k.ny - p.by * k.nx;
-      const Real kn =
-          k.inv_mass_a + k.inv_mass_b + k.inv_inertia_a * rna * rna + k.inv_inertia_b * rnb * rnb;
+      const SolverReal bx = ax + k.dx, by = ay + k.dy;
+      p.ax = ax;
+      p.ay = ay;
+      p.bx = bx;
+      p.by = by;
+      p.base_separation =
+          static_cast<SolverReal>(mp.separation) - ((bx - ax) * nx + (by - ay) * ny);
+      const SolverReal rna = ax * ny - ay * nx, rnb = bx * ny - by * nx;
+      const SolverReal kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
       p.normal_mass = kn > 0 ? 1 / kn : 0;
-      const Real rta = p.ax * ty - p.ay * tx;
-      const Real rtb = p.bx * ty - p.by * tx;
-      const Real kt =
-          k.inv_mass_a + k.inv_mass_b + k.inv_inertia_a * rta * rta + k.inv_inertia_b * rtb * rtb;
+      const SolverReal rta = ax * ty - ay * tx, rtb = bx * ty - by * tx;
+      const SolverReal kt = ma + mb + ia * rta * rta + ib * rtb * rtb;
       p.tangent_mass = kt > 0 ? 1 / kt : 0;
-      p.normal_impulse = c.normal_impulse[j];
-      p.tangent_impulse = c.tangent_impulse[j];
+      p.normal_impulse = static_cast<SolverReal>(c.normal_impulse[j]);
+      p.tangent_impulse = static_cast<SolverReal>(c.tangent_impulse[j]);
       p.max_normal_impulse = 0;
-      const Real dvx = (sb.vx - sb.w * p.by) - (sa.vx - sa.w * p.ay);
-      const Real dvy = (sb.vy + sb.w * p.bx) - (sa.vy + sa.w * p.ax);
-      p.relative_velocity = dvx * k.nx + dvy * k.ny;
+      const SolverReal dvx = (sb.vx - sb.w * by) - (sa.vx - sa.w * ay);
+      const SolverReal dvy = (sb.vy + sb.w * bx) - (sa.vy + sa.w * ax);
+      p.relative_velocity = dvx * nx + dvy * ny;
     }
     contact_solver.set(r, k, worker);
   };
