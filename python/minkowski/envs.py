@@ -149,7 +149,7 @@ class WorldEnv(_EnvBase):
         if self._renderer is None:
             self._renderer = minkowski.Renderer(*self.frame_size)
         self._renderer.fit(self.view[0], self.view[1], 0)
-        return self._renderer.render(self.world, layers=["shapes", "joints"])
+        return self._renderer.render(self.world, layers=["shapes"])
 
     def close(self):
         self._renderer = None
