@@ -107,6 +107,16 @@ struct JointRef {
 
 using WorldClass = py::class_<WorldHandle, WorldPtr>;
 
+/// @brief Handles of one object compare equal and hash alike (ids carry their world and the
+/// slot's generation, so a reused slot is another object).
+template <class Ref>
+void bind_identity(py::class_<Ref>& cls) {
+  cls.def("__eq__", [](const Ref& a, const Ref& b) { return a.id == b.id; })
+      .def("__hash__", [](const Ref& r) {
+        return py::hash(py::make_tuple(r.id.world, r.id.index, r.id.generation));
+      });
+}
+
 /// @brief Copies `def` into its bound Python class, sets each keyword argument as one of its
 /// properties and copies it back; a name that is not a property raises TypeError naming
 /// `function`, as Python does for an unexpected keyword argument.

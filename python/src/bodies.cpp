@@ -32,6 +32,7 @@ void bind_bodies(py::module_& m, WorldClass& world) {
 
 Handles compare equal when they name the same body. Using one after its body was destroyed
 raises StaleIdError. Vectors are (x, y) tuples; position is the body origin's.)");
+  bind_identity(body);
   body.def_property_readonly(
           "index", [](const BodyRef& b) { return b.id.index; },
           "Slot index: the row of the batch arrays while no body was destroyed, and how events "
@@ -168,11 +169,6 @@ raises StaleIdError. Vectors are (x, y) tuples; position is the body origin's.)"
       .def(
           "destroy", [](const BodyRef& b) { b.w().destroy_body(b.id); },
           "Destroys the body, its shapes and joints.")
-      .def("__eq__", [](const BodyRef& a, const BodyRef& b) { return a.id == b.id; })
-      .def("__hash__",
-           [](const BodyRef& b) {
-             return py::hash(py::make_tuple(b.id.world, b.id.index, b.id.generation));
-           })
       .def("__repr__", [](const BodyRef& b) {
         if (!b.world->world().is_valid(b.id)) {
           return "<minkowski.Body " + std::to_string(b.id.index) + " (destroyed)>";

@@ -38,6 +38,7 @@ void bind_joints(py::module_& m, WorldClass& world) {
 
 Handles compare equal when they name the same joint. A joint is destroyed with either of its
 bodies (a gear with either of its joints).)");
+  bind_identity(joint);
   joint
       .def_property_readonly(
           "index", [](const JointRef& j) { return j.id.index; }, "Slot index, as events name it.")
@@ -134,11 +135,6 @@ bodies (a gear with either of its joints).)");
       .def(
           "destroy", [](const JointRef& j) { j.w().destroy_joint(j.id); },
           "Destroys the joint (and gears built on it).")
-      .def("__eq__", [](const JointRef& a, const JointRef& b) { return a.id == b.id; })
-      .def("__hash__",
-           [](const JointRef& j) {
-             return py::hash(py::make_tuple(j.id.world, j.id.index, j.id.generation));
-           })
       .def("__repr__", [](const JointRef& j) {
         if (!j.world->world().is_valid(j.id)) {
           return "<minkowski.Joint " + std::to_string(j.id.index) + " (destroyed)>";

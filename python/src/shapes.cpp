@@ -47,6 +47,7 @@ void bind_shapes(py::module_& m, WorldClass& world) {
 
 Handles compare equal when they name the same shape; events and queries name shapes by
 Shape.index (World.shape(index) gives the handle back).)");
+  bind_identity(shape);
   shape
       .def_property_readonly(
           "index", [](const ShapeRef& s) { return s.id.index; }, "Slot index, as events name it.")
@@ -131,11 +132,6 @@ Shape.index (World.shape(index) gives the handle back).)");
       .def(
           "destroy", [](const ShapeRef& s) { s.w().destroy_shape(s.id); },
           "Detaches and destroys the shape.")
-      .def("__eq__", [](const ShapeRef& a, const ShapeRef& b) { return a.id == b.id; })
-      .def("__hash__",
-           [](const ShapeRef& s) {
-             return py::hash(py::make_tuple(s.id.world, s.id.index, s.id.generation));
-           })
       .def("__repr__", [](const ShapeRef& s) {
         if (!s.world->world().is_valid(s.id)) {
           return "<minkowski.Shape " + std::to_string(s.id.index) + " (destroyed)>";
