@@ -34,35 +34,28 @@ def scene_json():
                        "world": {"enable_sleep": False}, "bodies": bodies})
 
 
-def python_batch(minkowski, path, steps):
+def read_batch(world):
+    """Every state through the batch arrays."""
+    return (world.positions(), world.angles(), world.linear_velocities(),
+            world.angular_velocities())
+
+
+def read_per_body(world):
+    """Every state through a property per body and state."""
+    return [(b.position, b.angle, b.linear_velocity, b.angular_velocity) for b in world.bodies]
+
+
+def python_loop(minkowski, path, steps, read):
+    """(step ns, read ns) of each step, in the thread's CPU time."""
     world = minkowski.load_scene(path)
     out = []
     for _ in range(steps):
         start = time.thread_time_ns()
         world.step()
         stepped = time.thread_time_ns()
-        positions = world.positions()
-        angles = world.angles()
-        velocities = world.linear_velocities()
-        spins = world.angular_velocities()
-        read = time.thread_time_ns()
-        out.append((stepped - start, read - stepped))
-    del positions, angles, velocities, spins
-    return out
-
-
-def python_per_body(minkowski, path, steps):
-    world = minkowski.load_scene(path)
-    out = []
-    for _ in range(steps):
-        start = time.thread_time_ns()
-        world.step()
-        stepped = time.thread_time_ns()
-        states = [(b.position, b.angle, b.linear_velocity, b.angular_velocity)
-                  for b in world.bodies]
-        read = time.thread_time_ns()
-        out.append((stepped - start, read - stepped))
-    del states
+        read(world)
+        done = time.thread_time_ns()
+        out.append((stepped - start, done - stepped))
     return out
 
 
@@ -91,8 +84,9 @@ def main():
         assert minkowski.load_scene(path).body_count == 1001
         for round_index in range(options.rounds):
             times["cpp"] += cpp(twin, path, options.steps)
-            times["python_batch"] += python_batch(minkowski, path, options.steps)
-            times["python_per_body"] += python_per_body(minkowski, path, options.steps)
+            times["python_batch"] += python_loop(minkowski, path, options.steps, read_batch)
+            times["python_per_body"] += python_loop(minkowski, path, options.steps,
+                                                    read_per_body)
             print(f"round {round_index + 1} of {options.rounds}", file=sys.stderr)
     rows = ["case,size,implementation,median_ns"]
     medians = {}
