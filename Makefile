@@ -4,8 +4,11 @@ BUILD_TYPE ?= Release
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 CTEST_FLAGS ?= --output-on-failure
+# The Python the module is built for and tested with: Debian's, whatever else is on PATH.
+PYTHON ?= $(shell test -x /usr/bin/python3 && echo /usr/bin/python3 || command -v python3)
+CONFIGURE = cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DPython3_EXECUTABLE=$(PYTHON)
 
-.PHONY: all deps build demo test bench docs format clean sanitize-test tsan-test
+.PHONY: all deps build python demo test bench docs format clean sanitize-test tsan-test
 
 all: build
 
@@ -18,13 +21,21 @@ $(BUILD_DIR)/CMakeCache.txt:
 configure: $(BUILD_DIR)/CMakeCache.txt
 
 build: deps-build
-	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(CMAKE_FLAGS)
+	$(CONFIGURE) $(CMAKE_FLAGS)
 	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+# The Python module alone, in BUILD_DIR/python (import it with PYTHONPATH=BUILD_DIR/python);
+# a new build directory leaves the tests out (they need the test packages).
+python: deps-python
+	$(CONFIGURE) $(if $(wildcard $(BUILD_DIR)/CMakeCache.txt),,-DMINK_BUILD_TESTS=OFF) $(CMAKE_FLAGS)
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target python
+	@echo "minkowski built in $(abspath $(BUILD_DIR))/python:"
+	@echo "  export PYTHONPATH=$(abspath $(BUILD_DIR))/python; $(PYTHON) -c 'import minkowski'"
 
 # The default scene headless (video, a few frames, stats), the paper's figures and a Box2D
 # comparison with its plot, all under out/.
 demo: deps-test
-	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(CMAKE_FLAGS)
+	$(CONFIGURE) $(CMAKE_FLAGS)
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target mink
 	mkdir -p out/frames
 	$(BUILD_DIR)/bin/mink run tumbler_400 --seconds 10 --video out/demo.mp4 --stats out/stats.csv \
@@ -44,7 +55,7 @@ demo: deps-test
 	@echo "                out/compare/trajectories.csv and out/compare/trajectories.png"
 
 test: deps-test
-	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DMINK_BUILD_TESTS=ON $(CMAKE_FLAGS)
+	$(CONFIGURE) -DMINK_BUILD_TESTS=ON $(CMAKE_FLAGS)
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 	ctest --test-dir $(BUILD_DIR) -j $(JOBS) $(CTEST_FLAGS)
 
@@ -62,9 +73,9 @@ tsan-test: deps-test
 	TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/bin/mink_engine_tests
 
 bench: deps-bench
-	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DMINK_BUILD_BENCH=ON $(CMAKE_FLAGS)
+	$(CONFIGURE) -DMINK_BUILD_BENCH=ON $(CMAKE_FLAGS)
 	cmake --build $(BUILD_DIR) -j $(JOBS)
-	bench/run.sh $(BUILD_DIR)
+	PYTHON=$(PYTHON) bench/run.sh $(BUILD_DIR)
 
 # API reference from the public headers' comments, when doxygen is installed.
 docs:

@@ -80,3 +80,40 @@ if(MINK_BUILD_BENCH AND NOT MINK_WITH_RENDER)
   message(FATAL_ERROR "MINK_BUILD_BENCH needs MINK_WITH_RENDER: the benchmarks include the "
                       "renderer's. Configure with -DMINK_BUILD_BENCH=OFF or -DMINK_WITH_RENDER=ON.")
 endif()
+
+# The Python module `minkowski` (python/): pybind11 and numpy, built for the Python 3 that
+# Python3_EXECUTABLE names (the Makefile passes Debian's /usr/bin/python3). Not in sanitizer
+# builds: an instrumented extension cannot be loaded into an uninstrumented interpreter.
+option(MINK_WITH_PYTHON "Build the Python module minkowski (pybind11, numpy)" ON)
+if(MINK_WITH_PYTHON AND (MINK_SANITIZE OR MINK_TSAN))
+  message(STATUS "MINK_WITH_PYTHON is off in sanitizer builds (the interpreter is not "
+                 "instrumented)")
+  set(MINK_WITH_PYTHON OFF)
+endif()
+if(MINK_WITH_PYTHON AND NOT MINK_WITH_RENDER)
+  message(STATUS "MINK_WITH_PYTHON needs MINK_WITH_RENDER (frames as arrays): not built")
+  set(MINK_WITH_PYTHON OFF)
+endif()
+if(MINK_WITH_PYTHON)
+  find_package(Python3 3.9 QUIET COMPONENTS Interpreter Development.Module)
+  if(NOT Python3_FOUND)
+    mink_missing_dependency("MINK_WITH_PYTHON" "Python 3 and its headers" python3-dev
+                            MINK_WITH_PYTHON)
+  endif()
+  find_package(pybind11 2.6 CONFIG QUIET)
+  if(NOT pybind11_FOUND)
+    mink_missing_dependency("MINK_WITH_PYTHON" "pybind11" pybind11-dev MINK_WITH_PYTHON)
+  endif()
+  execute_process(COMMAND ${Python3_EXECUTABLE} -c "import numpy"
+                  RESULT_VARIABLE mink_numpy_missing OUTPUT_QUIET ERROR_QUIET)
+  if(mink_numpy_missing)
+    mink_missing_dependency("MINK_WITH_PYTHON"
+                            "numpy for ${Python3_EXECUTABLE} (another interpreter: "
+                            "-DPython3_EXECUTABLE=PATH)" python3-numpy MINK_WITH_PYTHON)
+  endif()
+  # The module links the static libraries into a shared object: their code must be
+  # position-independent. Nothing interposes their symbols, so calls between them may still
+  # be inlined as in an executable.
+  set(CMAKE_POSITION_INDEPENDENT_CODE ON)
+  target_compile_options(mink_build_flags INTERFACE -fno-semantic-interposition)
+endif()

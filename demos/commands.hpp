@@ -27,6 +27,7 @@ Action add_export_scene_command(CLI::App& app, Streams streams);
 Action add_run_command(CLI::App& app, Streams streams);
 Action add_compare_command(CLI::App& app, Streams streams);
 Action add_sandbox_command(CLI::App& app, Streams streams);
+Action add_sweep_command(CLI::App& app, Streams streams);
 
 // The SCENE argument of the commands that run a scene: a built-in's name or a scene file,
 // resolved by resolve_scene (scene_file.hpp). `scene` holds the default.

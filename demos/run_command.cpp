@@ -23,6 +23,7 @@
 #include "mink/render/frame_sink.hpp"
 #include "mink/render/gl_context.hpp"
 #include "mink/render/renderer.hpp"
+#include "mink/render/world_view.hpp"
 #include "output_files.hpp"
 #include "scene_view.hpp"
 
@@ -135,7 +136,7 @@ int run_scene(const RunOptions& options, Streams streams) {
     renderer = std::make_unique<Renderer>(*context);
     Vec2 lower;
     Vec2 upper;
-    scene_bounds(world, lower, upper);
+    world_bounds(world, lower, upper);
     renderer->camera().fit(lower, upper, 24);
     if (options.frames) png_sink = open_frame_sink(out / "frames", width, height);
     if (!options.video.empty()) {

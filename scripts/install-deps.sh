@@ -1,20 +1,24 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the build needs, and only those that are missing.
-# Usage: scripts/install-deps.sh [build|test|bench|all]
+# Usage: scripts/install-deps.sh [build|python|test|bench|all]
 set -euo pipefail
 
 profile=${1:-build}
 build_pkgs=(build-essential cmake pkg-config libeigen3-dev libcli11-dev nlohmann-json3-dev libpng-dev libbox2d-dev
-            libosmesa6-dev libegl-dev libgl-dev libsdl2-dev)
-test_pkgs=(libgtest-dev libgmock-dev libcgal-dev libgmp-dev libmpfr-dev libbox2d-dev xvfb xauth ffmpeg)
+            libosmesa6-dev libegl-dev libgl-dev libsdl2-dev python3-dev pybind11-dev python3-numpy)
+# What the Python module's sweeps use (its tests too).
+python_pkgs=(python3-pandas python3-dask python3-distributed python3-tqdm)
+test_pkgs=(libgtest-dev libgmock-dev libcgal-dev libgmp-dev libmpfr-dev libbox2d-dev xvfb xauth ffmpeg
+           python3-pytest "${python_pkgs[@]}" python3-pip python3-setuptools python3-wheel)
 bench_pkgs=(libbenchmark-dev libcgal-dev libgmp-dev libmpfr-dev libqhull-dev gnuplot-nox)
 
 case "$profile" in
   build) wanted=("${build_pkgs[@]}") ;;
+  python) wanted=("${build_pkgs[@]}" "${python_pkgs[@]}") ;;
   test) wanted=("${build_pkgs[@]}" "${test_pkgs[@]}") ;;
   bench) wanted=("${build_pkgs[@]}" "${test_pkgs[@]}" "${bench_pkgs[@]}") ;;
   all) wanted=("${build_pkgs[@]}" "${test_pkgs[@]}" "${bench_pkgs[@]}") ;;
-  *) echo "install-deps: unknown profile '$profile' (build, test, bench or all)" >&2; exit 2 ;;
+  *) echo "install-deps: unknown profile '$profile' (build, python, test, bench or all)" >&2; exit 2 ;;
 esac
 
 missing=()
