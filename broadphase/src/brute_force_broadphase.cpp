@@ -11,7 +11,9 @@ bool pair_less(const ProxyPair& x, const ProxyPair& y) {
 }
 }  // namespace
 
-BruteForceBroadphase::BruteForceBroadphase(Real margin) : store_(margin) {}
+BruteForceBroadphase::BruteForceBroadphase(Real margin) : store_(Fattening{margin}) {}
+
+BruteForceBroadphase::BruteForceBroadphase(const Fattening& fattening) : store_(fattening) {}
 
 ProxyId BruteForceBroadphase::create_proxy(const Aabb& tight, ProxyKind kind,
                                            std::uint64_t user_data) {

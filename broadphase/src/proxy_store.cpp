@@ -10,8 +10,7 @@ namespace mink {
 
 namespace {
 
-// How many last steps ahead a moved box reaches, and the most it reaches in margins.
-constexpr Real kPrediction = 4;
+// The most a moved box reaches ahead, in margins.
 constexpr Real kPredictionLimit = 4;
 
 std::string describe(const Aabb& box) {
@@ -39,9 +38,18 @@ void ProxyStore::check_point(const Vec2& point, std::string_view operation) {
   }
 }
 
-ProxyStore::ProxyStore(Real margin) : margin_(margin) {
-  if (!std::isfinite(margin) || margin < 0) {
-    throw InvalidArgumentError("broadphase margin " + std::to_string(margin) +
+ProxyStore::ProxyStore(const Fattening& fattening) : fattening_(fattening) {
+  if (!std::isfinite(fattening.margin) || fattening.margin < 0) {
+    throw InvalidArgumentError("broadphase margin " + std::to_string(fattening.margin) +
+                               " is not a finite non-negative number");
+  }
+  if (std::isnan(fattening.size_fraction) || fattening.size_fraction < 0) {
+    throw InvalidArgumentError("broadphase margin size fraction " +
+                               std::to_string(fattening.size_fraction) + " is not non-negative");
+  }
+  if (!std::isfinite(fattening.prediction_steps) || fattening.prediction_steps < 0) {
+    throw InvalidArgumentError("broadphase prediction steps " +
+                               std::to_string(fattening.prediction_steps) +
                                " is not a finite non-negative number");
   }
 }
@@ -100,12 +108,17 @@ bool ProxyStore::move(ProxyId id, const Aabb& tight) {
 }
 
 Aabb ProxyStore::fattened(const Aabb& tight, const Vec2& step, std::string_view operation) const {
-  Aabb fat = tight.fattened(margin_);
+  Real margin = fattening_.margin;
+  if (std::isfinite(fattening_.size_fraction)) {
+    margin = std::min(margin, fattening_.size_fraction * 0.5 * (tight.upper - tight.lower).norm());
+  }
+  Aabb fat = tight.fattened(margin);
   // Reach ahead along the last step, so a steadily moving body keeps its box for longer. A
   // few margins at most: a teleport is no motion to predict.
-  const Real most = kPredictionLimit * margin_;
+  const Real most = kPredictionLimit * fattening_.margin;
   for (int axis = 0; axis < 2; ++axis) {
-    const Real ahead = std::min(kPrediction * std::abs(step[axis]), most);
+    if (fattening_.prediction_steps == 0) break;
+    const Real ahead = std::min(fattening_.prediction_steps * std::abs(step[axis]), most);
     if (step[axis] < 0) {
       fat.lower[axis] -= ahead;
     } else {

@@ -53,7 +53,9 @@ constexpr auto key_below = [](const auto& entry, std::uint64_t key) { return ent
 
 }  // namespace
 
-SweepAndPrune::SweepAndPrune(Real margin) : store_(margin) {}
+SweepAndPrune::SweepAndPrune(Real margin) : store_(Fattening{margin}) {}
+
+SweepAndPrune::SweepAndPrune(const Fattening& fattening) : store_(fattening) {}
 
 ProxyId SweepAndPrune::create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data) {
   const ProxyId id = store_.create(tight, kind, user_data);

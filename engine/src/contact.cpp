@@ -251,14 +251,15 @@ bool WorldState::update_manifold(Contact& c) const {
     const Manifold old = c.manifold;
     const Real old_normal[2] = {c.normal_impulse[0], c.normal_impulse[1]};
     const Real old_tangent[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
-    if (!shape_a.aabb.overlaps(shape_b.aabb)) {
+    // Speculative distance: the base margin plus how far the pair may close this step.
+    const Vec2 dv = body_b.velocity - body_a.velocity;
+    const Real closing = dv.norm() + std::abs(body_a.angular_velocity) * body_a.extent +
+                         std::abs(body_b.angular_velocity) * body_b.extent;
+    const Real speculative = touching_distance + dt * closing;
+    // The boxes hold the shapes and the base margin: apart by more than the closing, no points.
+    if (!shape_a.aabb.fattened(dt * closing).overlaps(shape_b.aabb)) {
       c.manifold.point_count = 0;
     } else {
-      // Speculative distance: the base margin plus how far the pair may close this step.
-      const Vec2 dv = body_b.velocity - body_a.velocity;
-      const Real closing = dv.norm() + std::abs(body_a.angular_velocity) * body_a.extent +
-                           std::abs(body_b.angular_velocity) * body_b.extent;
-      const Real speculative = touching_distance + dt * closing;
       if (c.sharp_polygons) {
         c.manifold =
             collide_hulls(std::get<RoundedPolygon>(shape_a.geometry).hull, pose_a,

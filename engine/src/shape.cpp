@@ -106,9 +106,10 @@ Real shape_min_extent(const ShapeGeometry& geometry) {
 
 }  // namespace detail
 
-// The box the broadphase sees: the shape at the current pose, grown by the speculative
-// distance and by how far the body may move in the next step, so pairs exist before the
-// shapes meet even at speed.
+// The box the broadphase sees: the shape at the current pose grown by the speculative
+// distance, and stretched along the body's motion over the next `step` where that motion
+// outruns the broadphase's own margin (which already finds pairs that close that much), so
+// pairs exist before fast shapes meet.
 void WorldState::update_shape_aabb(Shape& s, const Body& b, Real step) {
   const Pose pose = b.pose();
   const Real c = pose.rotation.cos, sn = pose.rotation.sin;
@@ -126,13 +127,17 @@ void WorldState::update_shape_aabb(Shape& s, const Body& b, Real step) {
       ly = std::min(ly, y), uy = std::max(uy, y);
     }
   });
-  const Real radius = detail::shape_radius(s.geometry);
-  const Real margin = radius + 4 * def.linear_slop + step * std::abs(b.angular_velocity) * b.extent;
-  const Real sx = step * b.velocity.x(), sy = step * b.velocity.y();
-  s.aabb.lower = Vec2(pose.position.x() + lx - margin + std::min(sx, Real{0}),
-                      pose.position.y() + ly - margin + std::min(sy, Real{0}));
-  s.aabb.upper = Vec2(pose.position.x() + ux + margin + std::max(sx, Real{0}),
-                      pose.position.y() + uy + margin + std::max(sy, Real{0}));
+  const Real speculative = detail::shape_radius(s.geometry) + 4 * def.linear_slop;
+  const Aabb held{Vec2(pose.position.x() + lx - speculative, pose.position.y() + ly - speculative),
+                  Vec2(pose.position.x() + ux + speculative, pose.position.y() + uy + speculative)};
+  const Real covered = detail::broadphase_margin(held);
+  const auto beyond = [&](Real reach) {
+    return reach > covered ? reach - covered : reach < -covered ? reach + covered : Real{0};
+  };
+  const Real turn = beyond(step * std::abs(b.angular_velocity) * b.extent);
+  const Real sx = beyond(step * b.velocity.x()), sy = beyond(step * b.velocity.y());
+  s.aabb.lower = held.lower - Vec2(turn - std::min(sx, Real{0}), turn - std::min(sy, Real{0}));
+  s.aabb.upper = held.upper + Vec2(turn + std::max(sx, Real{0}), turn + std::max(sy, Real{0}));
 }
 
 void WorldState::create_proxy(std::uint32_t shape_index) {

@@ -31,7 +31,7 @@ struct WorldState {
   detail::IdPool<detail::Shape> shapes;
   detail::IdPool<detail::Joint> joints;
 
-  SweepAndPrune broadphase;
+  SweepAndPrune broadphase{detail::kBroadphaseFattening};
   PairEvents pair_events;
   // Proxies of destroyed shapes are released at the start of the next step, before the pair
   // update, so a proxy id is never reused within one pair-update cycle.
@@ -106,7 +106,7 @@ struct WorldState {
   void compact_awake_list();
   void update_mass(detail::Body& body);
   // shape.cpp
-  void update_shape_aabb(detail::Shape& shape, const detail::Body& body, Real dt);
+  void update_shape_aabb(detail::Shape& shape, const detail::Body& body, Real step);
   void create_proxy(std::uint32_t shape_index);
   void destroy_proxy(detail::Shape& shape);
   // Re-makes the shape's broadphase proxy, so every pair it is in is tested again next step

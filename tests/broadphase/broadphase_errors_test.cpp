@@ -11,6 +11,7 @@
 namespace {
 
 using mink::Aabb;
+using mink::Fattening;
 using mink::ProxyKind;
 using mink::Vec2;
 
@@ -40,6 +41,8 @@ TYPED_TEST(BroadphaseErrors, RejectsBadBoxesIdsAndMargins) {
   EXPECT_THROW(broadphase.user_data(id), mink::InvalidArgumentError);
   EXPECT_THROW(TypeParam{-1.0}, mink::InvalidArgumentError);
   EXPECT_THROW(TypeParam{nan}, mink::InvalidArgumentError);
+  EXPECT_THROW((TypeParam{Fattening{0.1, -1, 0}}), mink::InvalidArgumentError);
+  EXPECT_THROW((TypeParam{Fattening{0.1, 0.125, nan}}), mink::InvalidArgumentError);
   try {
     broadphase.move_proxy(id, {Vec2(0, 0), Vec2(1, 1)});
     FAIL() << "no error";
@@ -74,6 +77,20 @@ TYPED_TEST(BroadphaseErrors, FatBoxReachesAheadAlongTheLastStep) {
   EXPECT_TRUE(broadphase.move_proxy(id, {Vec2(100, 0), Vec2(101, 1)}));
   EXPECT_EQ(broadphase.fat_aabb(id).lower, Vec2(100 - 0.25, -0.25));
   EXPECT_EQ(broadphase.fat_aabb(id).upper, Vec2(101 + 0.25 + 4 * 0.25, 1 + 0.25 + 4 * 0.1875));
+}
+
+TYPED_TEST(BroadphaseErrors, SmallBoxesGetSmallMarginsAndNoReach) {
+  TypeParam broadphase(Fattening{0.25, 0.125, 0});
+  // Half-diagonal 2.5: an eighth of it is more than the margin, which then holds.
+  const auto big = broadphase.create_proxy({Vec2(0, 0), Vec2(3, 4)}, ProxyKind::moving, 0);
+  EXPECT_EQ(broadphase.fat_aabb(big).lower, Vec2(-0.25, -0.25));
+  // Half-diagonal 0.25: the margin is an eighth of it.
+  const auto small = broadphase.create_proxy({Vec2(0, 0), Vec2(0.3, 0.4)}, ProxyKind::moving, 1);
+  EXPECT_EQ(broadphase.fat_aabb(small).upper, Vec2(0.3 + 0.03125, 0.4 + 0.03125));
+  // Leaving its box, it is fattened around where it is, with no reach along the step.
+  EXPECT_TRUE(broadphase.move_proxy(small, {Vec2(1, 0), Vec2(1.3, 0.4)}));
+  EXPECT_EQ(broadphase.fat_aabb(small).lower, Vec2(1 - 0.03125, -0.03125));
+  EXPECT_EQ(broadphase.fat_aabb(small).upper, Vec2(1.3 + 0.03125, 0.4 + 0.03125));
 }
 
 TYPED_TEST(BroadphaseErrors, StaticPairsAreNeverReported) {

@@ -71,7 +71,7 @@ class Handles {
 // How a scenario places and moves boxes.
 struct Layout {
   std::string name;
-  Real margin = 0.1;
+  mink::Fattening fattening;  // a margin of 0.1 reaching four steps ahead, unless changed
   // A new tight box.
   std::function<Aabb(std::mt19937_64&)> spawn;
   // The tight box after one step of ordinary motion.
@@ -100,7 +100,7 @@ Aabb jitter(std::mt19937_64& random, const Aabb& box, Real amount) {
 
 class Twin {
  public:
-  explicit Twin(Real margin) : fast_(margin), slow_(margin) {}
+  explicit Twin(const mink::Fattening& fattening) : fast_(fattening), slow_(fattening) {}
 
   void create(const Aabb& box, ProxyKind kind) {
     const std::uint64_t handle = next_handle_++;
@@ -181,7 +181,7 @@ class Twin {
 // vacuous.
 std::size_t run(const Layout& layout, std::uint64_t seed) {
   std::mt19937_64 random(seed);
-  Twin twin(layout.margin);
+  Twin twin(layout.fattening);
   std::bernoulli_distribution coin(0.5);
   const auto kind = [&] {
     return uniform(random, 0, 1) < layout.static_fraction ? ProxyKind::static_body
@@ -266,6 +266,13 @@ TEST(SweepAndPruneOracle, UniformUnitBoxes) {
   expect_pairs_over(uniform_layout(), 1, 6, 50);
 }
 
+// The engine's fattening: margins by size, no reach ahead.
+TEST(SweepAndPruneOracle, UniformUnitBoxesWithMarginsBySize) {
+  Layout layout = uniform_layout();
+  layout.fattening = {0.05, 0.125, 0};
+  expect_pairs_over(layout, 1, 6, 30);
+}
+
 TEST(SweepAndPruneOracle, MixedSizesFromTinyToHuge) {
   Layout layout = uniform_layout();
   layout.name = "mixed sizes";
@@ -311,7 +318,7 @@ TEST(SweepAndPruneOracle, TouchingGridWithoutMargin) {
   // Integer boxes on a grid with no margin: pairs begin and end on exact contact.
   Layout layout;
   layout.name = "touching grid";
-  layout.margin = 0;
+  layout.fattening.margin = 0;
   layout.spawn = [](std::mt19937_64& r) {
     const Vec2 corner(std::floor(uniform(r, 0, 20)), std::floor(uniform(r, 0, 20)));
     return Aabb{corner, corner + Vec2(1, 1)};

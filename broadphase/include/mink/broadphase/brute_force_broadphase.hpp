@@ -12,6 +12,7 @@ namespace mink {
 class BruteForceBroadphase final : public Broadphase {
  public:
   explicit BruteForceBroadphase(Real margin = 0.1);
+  explicit BruteForceBroadphase(const Fattening& fattening);
 
   ProxyId create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data) override;
   void destroy_proxy(ProxyId id) override;

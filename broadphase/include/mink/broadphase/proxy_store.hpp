@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string_view>
 #include <vector>
 
@@ -9,17 +10,27 @@
 
 namespace mink {
 
+/// How a tight box is fattened when it is stored: grown by a margin on every side, at most
+/// `margin` and at most `size_fraction` of the box's half-diagonal (so a small shape gets a
+/// small margin, and its pairs stay few), and stretched ahead along the last step's motion.
+struct Fattening {
+  Real margin = 0.1;  ///< the most a box grows on each side
+  Real size_fraction = std::numeric_limits<Real>::infinity();
+  /// Reach ahead along the last step's motion, this many steps' worth (at most four margins):
+  /// a steadily moving box is refattened less often, at the price of more pairs. 0: none.
+  Real prediction_steps = 4;
+};
+
 /// The per-proxy bookkeeping both broadphases share: ids, fat boxes, kinds, user data and the
 /// validation of everything that crosses the API. Ids freed by destroy() are handed out again
 /// only after release_destroyed(), so within one step an id names one proxy only.
 class ProxyStore {
  public:
-  explicit ProxyStore(Real margin);
+  explicit ProxyStore(const Fattening& fattening);
 
   ProxyId create(const Aabb& tight, ProxyKind kind, std::uint64_t user_data);
   void destroy(ProxyId id);
-  /// Refattens and returns true when `tight` leaves the stored box. The new box also reaches
-  /// ahead along the last step's motion, as far as a few steps or a few margins.
+  /// Refattens and returns true when `tight` leaves the stored box (see Fattening).
   bool move(ProxyId id, const Aabb& tight);
   void release_destroyed();
 
@@ -37,13 +48,13 @@ class ProxyStore {
   std::size_t count() const { return count_; }
   /// One past the largest id ever handed out.
   std::size_t id_bound() const { return alive_.size(); }
-  Real margin() const { return margin_; }
+  const Fattening& fattening() const { return fattening_; }
 
  private:
-  /// `tight` grown by the margin and stretched along `step`, the motion since the last move.
+  /// `tight` grown by its margin and stretched along `step`, the motion since the last move.
   Aabb fattened(const Aabb& tight, const Vec2& step, std::string_view operation) const;
 
-  Real margin_;
+  Fattening fattening_;
   std::vector<Aabb> fat_;
   std::vector<Vec2> last_lower_;  ///< lower corner of the last tight box, for the step
   std::vector<ProxyKind> kind_;

@@ -26,6 +26,7 @@ namespace mink {
 class SweepAndPrune final : public Broadphase {
  public:
   explicit SweepAndPrune(Real margin = 0.1);
+  explicit SweepAndPrune(const Fattening& fattening);
 
   ProxyId create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data) override;
   void destroy_proxy(ProxyId id) override;
