@@ -29,8 +29,20 @@ void WorldState::update_islands() {
       other.sleep_time = 0;
     }
   }
-  std::size_t islands = 0;
   woken.clear();
+  // An island falls asleep only once every member has rested for time_to_sleep. While no
+  // awake body has, none can: then the islands need not be walked, only counted, and what
+  // awake bodies reach woken (most steps of a busy scene; the walk below cost as much as the
+  // narrowphase there).
+  const bool some_rested = std::any_of(awake_list.begin(), awake_list.end(), [&](std::uint32_t i) {
+    const Body& b = bodies[i];
+    return b.type == BodyType::dynamic && b.allow_sleep && b.sleep_time >= def.time_to_sleep;
+  });
+  if (!some_rested) {
+    wake_reached_islands();
+    return;
+  }
+  std::size_t islands = 0;
   // Indexed: waking appends to the list, and the woken are reached by the walk anyway.
   for (std::size_t k = 0, listed = awake_list.size(); k < listed; ++k) {
     const std::uint32_t start = awake_list[k];
@@ -91,11 +103,109 @@ void WorldState::update_islands() {
     }
   }
   std::sort(fell_asleep.begin(), fell_asleep.end());
-  // Contacts among the bodies this pass woke join the step (with the manifolds they slept with).
-  if (!woken.empty()) {
-    for (const std::uint32_t i : woken) mark_step_contacts(bodies[i]);
-    collect_step_contacts();
+  join_woken_contacts();
+  counters.islands = islands;
+}
+
+// Contacts among the bodies this pass woke join the step (with the manifolds they slept with).
+void WorldState::join_woken_contacts() {
+  if (woken.empty()) return;
+  for (const std::uint32_t i : woken) mark_step_contacts(bodies[i]);
+  collect_step_contacts();
+}
+
+// The island pass when every island stays awake: it wakes every sleeping body that an awake
+// one reaches through contacts with points and joints (as the walk does, islands of awake
+// bodies being awake), and counts the islands by joining bodies along the same links.
+void WorldState::wake_reached_islands() {
+  island_parent.resize(bodies.size());
+  const auto find = [&](std::uint32_t i) {
+    while (island_parent[i] != i) i = island_parent[i] = island_parent[island_parent[i]];
+    return i;
+  };
+  const auto join = [&](std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) island_parent[std::max(a, b)] = std::min(a, b);
+  };
+  const auto links = [&](const Body& b) { return b.type == BodyType::dynamic && b.enabled; };
+  for (const std::uint32_t i : awake_list) {
+    if (bodies[i].type != BodyType::dynamic) continue;
+    island_parent[i] = i;
+    island_stamp[i] = step_count;
   }
+  // A sleeping body reached wakes with everything its sleeping island holds.
+  const auto wake_from = [&](std::uint32_t start) {
+    island_stack.assign(1, start);
+    island_stamp[start] = step_count;
+    island_parent[start] = start;
+    while (!island_stack.empty()) {
+      const std::uint32_t i = island_stack.back();
+      island_stack.pop_back();
+      Body& b = bodies[i];
+      b.awake = true;
+      add_to_awake_list(b);
+      woken.push_back(i);
+      const auto reach = [&](std::uint32_t j) {
+        if (!links(bodies[j])) return;
+        if (island_stamp[j] != step_count) {
+          island_stamp[j] = step_count;
+          island_parent[j] = j;
+          island_stack.push_back(j);
+        }
+        join(i, j);
+      };
+      for (const std::uint32_t ci : b.contacts) {
+        const Contact& c = contacts[ci];
+        if (c.manifold.point_count > 0) reach(c.body_a == i ? c.body_b : c.body_a);
+      }
+      for (const std::uint32_t ji : b.joints) {
+        const detail::Joint& joint = joints[ji];
+        for (int m = 0; m < joint.body_count; ++m) {
+          const Body& other = bodies[joint.body[m]];
+          if (other.type == BodyType::kinematic &&
+              (other.velocity.squaredNorm() > 0 || other.angular_velocity != 0)) {
+            b.sleep_time = 0;
+          }
+          reach(joint.body[m]);
+        }
+      }
+    }
+  };
+  const auto link = [&](std::uint32_t a, std::uint32_t b) {
+    if (!links(bodies[a]) || !links(bodies[b])) return;
+    if (island_stamp[a] != step_count) wake_from(a);
+    if (island_stamp[b] != step_count) wake_from(b);
+    join(a, b);
+  };
+  for (const std::uint32_t ci : step_contacts) {
+    const Contact& c = contacts[ci];
+    if (c.manifold.point_count > 0) link(c.body_a, c.body_b);
+  }
+  for (std::size_t k = 0, listed = awake_list.size(); k < listed; ++k) {
+    const std::uint32_t i = awake_list[k];
+    Body& b = bodies[i];
+    if (b.type != BodyType::dynamic) continue;
+    for (const std::uint32_t ji : b.joints) {
+      const detail::Joint& joint = joints[ji];
+      for (int m = 0; m < joint.body_count; ++m) {
+        const Body& other = bodies[joint.body[m]];
+        // A moving kinematic body keeps what it is jointed to awake, as the walk has it.
+        if (other.type == BodyType::kinematic &&
+            (other.velocity.squaredNorm() > 0 || other.angular_velocity != 0)) {
+          b.sleep_time = 0;
+        }
+        link(i, joint.body[m]);
+      }
+    }
+  }
+  std::size_t islands = 0;
+  for (const std::uint32_t i : awake_list) {
+    if (bodies[i].type == BodyType::dynamic && island_stamp[i] == step_count && find(i) == i) {
+      ++islands;
+    }
+  }
+  join_woken_contacts();
   counters.islands = islands;
 }
 

@@ -86,6 +86,7 @@ struct WorldState {
   detail::JointStages joint_stages;
   std::vector<std::uint64_t> island_stamp;  // per body: the step whose island pass reached it
   std::vector<std::uint32_t> island_stack, island_members, woken;
+  std::vector<std::uint32_t> island_parent;  // union-find over bodies (wake_reached_islands)
   std::vector<ProxyId> query_scratch;
   detail::ContinuousState continuous;
 
@@ -138,6 +139,8 @@ struct WorldState {
   void destroy_sensor(std::uint32_t shape_index);
   // island.cpp
   void update_islands();
+  void wake_reached_islands();
+  void join_woken_contacts();
   // joint.cpp
   void destroy_joint(std::uint32_t index);
   // Gives the joint back its colour and takes one again with its bodies' current types.

@@ -29,6 +29,24 @@ TEST(Sleep, ARestingStackSleepsAsOneIslandAndStopsMoving) {
   EXPECT_EQ(world.position(boxes.back()), before);  // asleep: not integrated at all
 }
 
+// While no body has rested long enough to sleep, islands are counted without being walked:
+// stacks standing apart are islands of their own, and a plank laid across two joins them.
+TEST(Sleep, IslandsAreCountedWhileEveryBodyMoves) {
+  World world;
+  add_ground(world);
+  stack(world, 3, 0);
+  stack(world, 3, 3);
+  stack(world, 3, 6);
+  for (int i = 0; i < 10; ++i) world.step();
+  EXPECT_EQ(world.counters().islands, 3u);
+  BodyDef plank;
+  plank.type = BodyType::dynamic;
+  plank.position = Vec2(1.5, 3.15);  // across the first two stacks
+  world.create_shape(world.create_body(plank), ShapeDef::box(2.5, 0.1));
+  for (int i = 0; i < 15; ++i) world.step();
+  EXPECT_EQ(world.counters().islands, 2u);
+}
+
 TEST(Sleep, TouchingThroughTheApiWakesTheWholeIsland) {
   World world;
   add_ground(world);
