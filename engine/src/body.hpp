@@ -48,6 +48,9 @@ struct alignas(64) Body {
   // Contacts this body is in (indices into WorldState::contacts), so a step reaches the
   // contacts of awake bodies without scanning the sleeping ones.
   std::vector<std::uint32_t> contacts;
+  // Of those, the contacts with a static or kinematic body: what continuous collision sweeps
+  // a fast body against (none: nothing to sweep it against that its contacts hold).
+  std::uint32_t fixed_contacts = 0;
   std::vector<std::uint32_t> joints;  // joints this body is in (slots), a gear in all four
   bool in_awake_list = false;
 

@@ -30,6 +30,16 @@ void remove_from(std::vector<std::uint32_t>& list, std::uint32_t value) {
   list.pop_back();
 }
 
+void add_contact_to(Body& body, std::uint32_t contact, bool other_fixed) {
+  body.contacts.push_back(contact);
+  body.fixed_contacts += other_fixed ? 1 : 0;
+}
+
+void remove_contact_from(Body& body, std::uint32_t contact, bool other_fixed) {
+  remove_from(body.contacts, contact);
+  body.fixed_contacts -= other_fixed ? 1 : 0;
+}
+
 }  // namespace
 
 void WorldState::set_touching(Contact& c, bool touching) {
@@ -67,8 +77,6 @@ void WorldState::assign_new_colors() {
   });
   for (const std::uint32_t index : newly_acting) {
     Contact& c = contacts[index];
-    c.a_fixed = bodies[c.body_a].type != BodyType::dynamic;
-    c.b_fixed = bodies[c.body_b].type != BodyType::dynamic;
     c.color = graph.add(c.body_a, c.a_fixed, c.body_b, c.b_fixed);
   }
   newly_acting.clear();
@@ -82,8 +90,8 @@ void WorldState::destroy_contact(std::uint32_t index) {
   if (c.touching && c.events) end_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b)});
   set_touching(c, false);
   contact_index.erase(detail::pair_key(c.proxy_a, c.proxy_b));
-  remove_from(bodies[c.body_a].contacts, index);
-  remove_from(bodies[c.body_b].contacts, index);
+  remove_contact_from(bodies[c.body_a], index, c.b_fixed);
+  remove_contact_from(bodies[c.body_b], index, c.a_fixed);
   const std::uint32_t last = static_cast<std::uint32_t>(contacts.size() - 1);
   if (index != last) {
     contacts[index] = contacts[last];
@@ -177,11 +185,13 @@ void WorldState::update_pairs() {
     c.sharp_polygons = shape_a.type == ShapeType::polygon && shape_b.type == ShapeType::polygon &&
                        detail::shape_radius(shape_a.geometry) == 0 &&
                        detail::shape_radius(shape_b.geometry) == 0;
+    c.a_fixed = bodies[c.body_a].type != BodyType::dynamic;
+    c.b_fixed = bodies[c.body_b].type != BodyType::dynamic;
     const auto index = static_cast<std::uint32_t>(contacts.size());
     contact_index.emplace(key, index);
     contacts.push_back(c);
-    bodies[c.body_a].contacts.push_back(index);
-    bodies[c.body_b].contacts.push_back(index);
+    add_contact_to(bodies[c.body_a], index, c.b_fixed);
+    add_contact_to(bodies[c.body_b], index, c.a_fixed);
   }
 }
 

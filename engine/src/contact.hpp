@@ -36,9 +36,10 @@ struct Contact {
   // Fastest normal approach over the points before the solve, and where (hit events only).
   Real approach_speed = 0;
   Vec2 approach_point{0, 0};
-  // The constraint graph colour while the contact has points, and whether each body blocked
-  // it (a dynamic body) when it was given.
+  // The constraint graph colour while the contact has points.
   std::uint8_t color = 255;
+  // Whether each body is static or kinematic (fixed for the solver; it blocks no colour). Set
+  // when the contact is made: a body's type change remakes its contacts.
   bool a_fixed = false, b_fixed = false;
   ManifoldCache cache;
 };

@@ -128,9 +128,7 @@ void WorldState::solve_continuous() {
   continuous.fast.clear();
   continuous.hits = 0;
   // Which bodies moved fast: translation plus turn at the extent against the thinnest
-  // half-width. Listed in body order, so sensors meet them in a fixed order: sorted as
-  // (body, solver index) keys, which is cheaper than sorting the records.
-  continuous.fast_keys.clear();
+  // half-width. In body order (solver bodies are), so sensors meet them in a fixed order.
   for (std::uint32_t si = 0; si < solver_to_body.size(); ++si) {
     const std::uint32_t index = solver_to_body[si];
     const Body& b = bodies[index];
@@ -138,19 +136,13 @@ void WorldState::solve_continuous() {
     const detail::SolverBody& sb = solver_bodies[si];
     const Real moved = std::sqrt(sb.dpx * sb.dpx + sb.dpy * sb.dpy) + std::abs(sb.turn) * b.extent;
     if (!b.bullet && moved <= b.continuous_threshold * b.min_extent) continue;
-    continuous.fast_keys.push_back(std::uint64_t{index} << 32 | si);
+    FastBody& fast = continuous.fast.emplace_back();
+    fast.body = index;
+    fast.solver_index = si;
+    fast.bullet = b.bullet;
   }
-  counters.fast_bodies = continuous.fast_keys.size();
-  if (continuous.fast_keys.empty()) return;
-  std::sort(continuous.fast_keys.begin(), continuous.fast_keys.end());
-  continuous.fast.resize(continuous.fast_keys.size());
-  for (std::size_t i = 0; i < continuous.fast_keys.size(); ++i) {
-    FastBody& fast = continuous.fast[i];
-    fast = FastBody{};
-    fast.body = static_cast<std::uint32_t>(continuous.fast_keys[i] >> 32);
-    fast.solver_index = static_cast<std::uint32_t>(continuous.fast_keys[i]);
-    fast.bullet = bodies[fast.body].bullet;
-  }
+  counters.fast_bodies = continuous.fast.size();
+  if (continuous.fast.empty()) return;
 
   const auto count = static_cast<std::uint32_t>(continuous.fast.size());
   continuous.candidates.resize(tasks.workers());
@@ -222,14 +214,17 @@ void WorldState::solve_continuous() {
         const Shape& o = shapes[index];
         if (broadphase.fat_aabb(o.proxy).overlaps(fast.box)) found.push_back(index);
       };
+      const Body& body = bodies[fast.body];
       if (!fast.bullet && !fixed_shapes) {
         // Nothing static or kinematic in the world.
       } else if (fast.covered && !fast.bullet) {
-        for (const std::uint32_t c : bodies[fast.body].contacts) {
-          const detail::Contact& contact = contacts[c];
+        // Up to the last of its contacts with something static or kinematic.
+        std::uint32_t left = body.fixed_contacts;
+        for (std::size_t k = 0; left > 0; ++k) {
+          const detail::Contact& contact = contacts[body.contacts[k]];
           const bool a_is_fast = contact.body_a == fast.body;
-          const std::uint32_t other = a_is_fast ? contact.body_b : contact.body_a;
-          if (bodies[other].type == BodyType::dynamic) continue;
+          if (!(a_is_fast ? contact.b_fixed : contact.a_fixed)) continue;
+          --left;
           add_if_met(a_is_fast ? contact.shape_b : contact.shape_a);
         }
       } else {

@@ -28,7 +28,6 @@ struct FastBody {
 // broadphase candidates of the body it is sweeping.
 struct ContinuousState {
   std::vector<FastBody> fast;
-  std::vector<std::uint64_t> fast_keys;  // (body << 32 | solver index), to order `fast`
   std::vector<std::uint32_t> fast_by_x;  // indices into `fast`, by their box's lower x
   std::vector<std::vector<std::uint32_t>> candidates;
   // Shapes of kinematic bodies, which the broadphase files with the moving ones: a fast body
