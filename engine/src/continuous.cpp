@@ -16,8 +16,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <variant>
 
 #include "world_state.hpp"
@@ -82,6 +84,65 @@ std::optional<Circle> middle_circle(const ShapeGeometry& geometry) {
   return Circle{std::visit(Middle{}, geometry), 0.5 * thin};
 }
 
+// Calls face(normal, offset) for each face of a shape standing still at `pose`: the shape lies
+// where normal . x <= offset. Polygons up to kFaceLimit faces and segments have faces worth
+// testing; a circle has none.
+constexpr std::size_t kFaceLimit = 16;
+
+template <typename Face>
+void for_each_face(const ShapeGeometry& geometry, const Pose& pose, Face&& face) {
+  const auto line = [&](const Vec2& p1, const Vec2& p2, Real radius) {
+    const Vec2 a = pose.apply(p1), b = pose.apply(p2);
+    const Vec2 e = b - a;
+    const Real length = e.norm();
+    if (!(length > 0)) return;
+    const Vec2 n(e.y() / length, -e.x() / length);
+    face(n, n.dot(a) + radius);
+    face(Vec2(-n), -n.dot(a) + radius);  // both sides: a segment is a face either way
+  };
+  if (const auto* s = std::get_if<Segment>(&geometry)) {
+    line(s->point1, s->point2, 0);
+  } else if (const auto* c = std::get_if<ChainSegment>(&geometry)) {
+    line(c->segment.point1, c->segment.point2, 0);
+  } else if (const auto* k = std::get_if<Capsule>(&geometry)) {
+    line(k->center1, k->center2, k->radius);
+  } else if (const auto* p = std::get_if<RoundedPolygon>(&geometry)) {
+    const std::span<const Vec2> v = p->hull.vertices();
+    const std::span<const Vec2> n = p->hull.normals();
+    if (v.size() > kFaceLimit) return;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const Vec2 normal = pose.rotation.apply(n[i]);
+      face(normal, normal.dot(pose.apply(v[i])) + p->radius);
+    }
+  }
+}
+
+// Whether `moving` (its core points and radius), carried by `sweep`, stays farther than
+// `clearance` outside one face of the still shape `still` over the whole step: then they
+// cannot touch, and no time of impact is needed. A sweep moves the centre of mass along a
+// line and turns the body evenly, so along a normal a point at distance r from the centre
+// of mass dips below the straight line between its ends by at most r (1 - cos(turn / 2)) (a
+// turn within half a revolution; 2 r beyond).
+bool clear_of_a_face(const ShapeGeometry& moving, const Sweep& sweep, const ShapeGeometry& still,
+                     const Pose& still_pose, Real clearance) {
+  const Pose start = sweep.pose_at(0), end = sweep.pose_at(1);
+  const Real turn = std::abs(sweep.angle1 - sweep.angle0);
+  const Real dip = turn <= std::numbers::pi ? 1 - std::cos(0.5 * turn) : 2;
+  const Real radius = detail::shape_radius(moving);
+  bool clear = false;
+  for_each_face(still, still_pose, [&](const Vec2& normal, Real offset) {
+    if (clear) return;
+    Real nearest = std::numeric_limits<Real>::infinity();
+    detail::for_each_core_point(moving, [&](const Vec2& p) {
+      const Real stray = dip * (p - sweep.local_center).norm();
+      nearest =
+          std::min(nearest, std::min(normal.dot(start.apply(p)), normal.dot(end.apply(p))) - stray);
+    });
+    clear = nearest - radius > offset + clearance;
+  });
+  return clear;
+}
+
 }  // namespace
 
 // The first touch of `fast`'s shapes with `other_shape` moving by `other_sweep`, if it comes
@@ -92,9 +153,20 @@ std::optional<Circle> middle_circle(const ShapeGeometry& geometry) {
 void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
                             const Sweep& other_sweep) const {
   const Shape& o = shapes[other_shape];
+  // Beside a still shape, most sweeps stay outside one of its faces: cheaper to see than any
+  // time of impact.
+  const bool still =
+      other_sweep.center0 == other_sweep.center1 && other_sweep.angle0 == other_sweep.angle1;
+  const Pose still_pose = other_sweep.pose_at(0);
   for (const std::uint32_t s : bodies[fast.body].shapes) {
     const Shape& f = shapes[s];
     if (!should_make_contact(s, other_shape)) continue;
+    const Real tolerance = 0.25 * def.linear_slop;
+    const Real target = slop_target(f.geometry, o.geometry, def.linear_slop);
+    if (still &&
+        clear_of_a_face(f.geometry, fast.sweep, o.geometry, still_pose, target + tolerance)) {
+      continue;
+    }
     const ShapeDistance start =
         shape_distance(f.geometry, fast.sweep.pose_at(0), o.geometry, other_sweep.pose_at(0));
     const bool near = start.overlap || start.distance < 4 * def.linear_slop;
@@ -103,6 +175,9 @@ void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
       const std::optional<Circle> circle = middle_circle(f.geometry);
       if (!circle) continue;
       middle = *circle;
+      if (still && clear_of_a_face(middle, fast.sweep, o.geometry, still_pose, 3 * tolerance)) {
+        continue;
+      }
     }
     TimeOfImpactInput input;
     input.shape_a = near ? &middle : &f.geometry;
@@ -110,11 +185,10 @@ void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
     input.shape_b = &o.geometry;
     input.sweep_b = other_sweep;
     input.max_fraction = fast.fraction;
-    input.tolerance = 0.25 * def.linear_slop;
+    input.tolerance = tolerance;
     // The middle stops only when it would touch: the shape is half its thinness deep then,
     // past anything a contact would allow.
-    input.target =
-        near ? 2 * input.tolerance : slop_target(*input.shape_a, o.geometry, def.linear_slop);
+    input.target = near ? 2 * input.tolerance : target;
     const TimeOfImpactOutput out = time_of_impact(input);
     // A touch at the very start is the contact's: stopping there would hold the body still.
     if ((out.state == ToiState::hit || out.state == ToiState::gave_up) && out.fraction > 0 &&
@@ -124,22 +198,47 @@ void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
   }
 }
 
+// A body moved fast: translation plus turn at the extent against its thinnest half-width.
+// Its box over the step, from the start and end poses, and whether its shapes' broadphase
+// boxes hold it, are found here, while its records are at hand.
+void WorldState::mark_if_fast(std::uint32_t si) {
+  const Body& b = bodies[solver_to_body[si]];
+  if (b.type != BodyType::dynamic || b.shapes.empty()) return;
+  const detail::SolverBody& sb = solver_bodies[si];
+  const Real moved = std::sqrt(sb.dpx * sb.dpx + sb.dpy * sb.dpy) + std::abs(sb.turn) * b.extent;
+  if (!b.bullet && moved <= b.continuous_threshold * b.min_extent) return;
+  const Pose finish = b.pose();
+  const Pose start{b.center - Vec2(sb.dpx, sb.dpy) - b.previous_rotation.apply(b.local_center),
+                   b.previous_rotation};
+  bool first = true, covered = true;
+  Aabb swept;
+  for (const std::uint32_t s : b.shapes) {
+    const Shape& shape = shapes[s];
+    const Aabb box =
+        merge(compute_aabb(shape.geometry, start), compute_aabb(shape.geometry, finish));
+    swept = first ? box : merge(swept, box);
+    first = false;
+    covered =
+        covered && shape.proxy != null_proxy && broadphase.fat_aabb(shape.proxy).contains(box);
+  }
+  continuous.fast_mark[si] = 1;
+  continuous.fast_box[si] = swept;
+  continuous.fast_covered[si] = covered;
+}
+
 void WorldState::solve_continuous() {
   continuous.fast.clear();
   continuous.hits = 0;
-  // Which bodies moved fast: translation plus turn at the extent against the thinnest
-  // half-width. In body order (solver bodies are), so sensors meet them in a fixed order.
-  for (std::uint32_t si = 0; si < solver_to_body.size(); ++si) {
-    const std::uint32_t index = solver_to_body[si];
-    const Body& b = bodies[index];
-    if (b.type != BodyType::dynamic || b.shapes.empty()) continue;
-    const detail::SolverBody& sb = solver_bodies[si];
-    const Real moved = std::sqrt(sb.dpx * sb.dpx + sb.dpy * sb.dpy) + std::abs(sb.turn) * b.extent;
-    if (!b.bullet && moved <= b.continuous_threshold * b.min_extent) continue;
+  // The marked bodies, in body order (solver bodies are), so sensors meet them in a fixed
+  // order.
+  for (std::uint32_t si = 0; si < continuous.fast_mark.size(); ++si) {
+    if (continuous.fast_mark[si] == 0) continue;
     FastBody& fast = continuous.fast.emplace_back();
-    fast.body = index;
+    fast.body = solver_to_body[si];
     fast.solver_index = si;
-    fast.bullet = b.bullet;
+    fast.bullet = bodies[fast.body].bullet;
+    fast.box = continuous.fast_box[si];
+    fast.covered = continuous.fast_covered[si] != 0;
   }
   counters.fast_bodies = continuous.fast.size();
   if (continuous.fast.empty()) return;
@@ -158,37 +257,18 @@ void WorldState::solve_continuous() {
       if (shapes[s].proxy != null_proxy) continuous.kinematic_shapes.push_back(s);
     }
   }
-  // The box over the step from the start and end poses as the solver left them; the sweep
-  // (two arc tangents) waits until a body has something to meet, which most fast bodies, in
-  // free flight, do not.
-  tasks.parallel_for(count, 16, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-    for (std::uint32_t i = begin; i < end; ++i) {
-      FastBody& fast = continuous.fast[i];
-      // A body with nothing to meet needs no box (sensors and fast pairs use it too).
-      if (!fast.bullet && !fixed_shapes && !def.continuous_fast_pairs && sensors.empty()) continue;
-      const Body& b = bodies[fast.body];
-      const detail::SolverBody& sb = solver_bodies[fast.solver_index];
-      const Pose finish = b.pose();
-      const Pose start{b.center - Vec2(sb.dpx, sb.dpy) - b.previous_rotation.apply(b.local_center),
-                       b.previous_rotation};
-      bool first = true;
-      fast.covered = true;
-      for (const std::uint32_t s : b.shapes) {
-        const Shape& shape = shapes[s];
-        const Aabb box =
-            merge(compute_aabb(shape.geometry, start), compute_aabb(shape.geometry, finish));
-        fast.box = first ? box : merge(fast.box, box);
-        first = false;
-        fast.covered = fast.covered && shape.proxy != null_proxy &&
-                       broadphase.fat_aabb(shape.proxy).contains(box);
-      }
-      // Fast bodies meet each other on both their sweeps, so every sweep is needed then.
-      if (def.continuous_fast_pairs) {
+  // The sweep (two arc tangents) waits until a body has something to meet, which most fast
+  // bodies, in free flight, do not; fast bodies meet each other on both their sweeps, so
+  // every sweep is needed then.
+  if (def.continuous_fast_pairs) {
+    tasks.parallel_for(count, 16, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+      for (std::uint32_t i = begin; i < end; ++i) {
+        FastBody& fast = continuous.fast[i];
         fast.sweep = solver_sweep(fast.solver_index);
         fast.has_sweep = true;
       }
-    }
-  });
+    });
+  }
   // Fast bodies against each other: their boxes by lower x, so each finds its neighbours by a
   // short scan.
   continuous.fast_by_x.clear();
@@ -275,7 +355,8 @@ void WorldState::solve_continuous() {
       fast.has_sweep = true;
     }
   }
-  // Stopped bodies go back to where they first touched, keeping their velocity.
+  // Stopped bodies go back to where they first touched, keeping their velocity, and their
+  // shapes' boxes with them.
   for (FastBody& fast : continuous.fast) {
     if (fast.fraction >= 1) continue;
     ++continuous.hits;
@@ -284,6 +365,7 @@ void WorldState::solve_continuous() {
     b.origin = pose.position;
     b.rotation = pose.rotation;
     b.center = b.origin + b.rotation.apply(b.local_center);
+    for (const std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b, dt);
   }
   counters.continuous_hits = continuous.hits;
 }

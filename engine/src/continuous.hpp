@@ -27,6 +27,16 @@ struct FastBody {
 // Continuous collision's per-step lists: the fast bodies in body order, and per worker the
 // broadphase candidates of the body it is sweeping.
 struct ContinuousState {
+  // Per solver body, set by finish_body in parallel: whether it moved fast, and then its box
+  // over the step and whether its broadphase boxes cover it (FastBody's).
+  std::vector<std::uint8_t> fast_mark;
+  std::vector<Aabb> fast_box;
+  std::vector<std::uint8_t> fast_covered;
+  void prepare_marks(std::size_t solver_bodies) {
+    fast_mark.assign(solver_bodies, 0);
+    fast_box.resize(solver_bodies);
+    fast_covered.resize(solver_bodies);
+  }
   std::vector<FastBody> fast;
   std::vector<std::uint32_t> fast_by_x;  // indices into `fast`, by their box's lower x
   std::vector<std::vector<std::uint32_t>> candidates;

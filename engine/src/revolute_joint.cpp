@@ -39,16 +39,18 @@ void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bo
   SolverBody& b = bodies[frame.bodies[1].solver];
   const RevoluteJointDef& def = joint.def;
   const bool turns = joint.axial_mass > 0;
-  const Real angle = frame.coordinate_a + (delta_angle(b) - delta_angle(a));
+  // The angle only where a row needs it (two arc tangents a substep, for every joint of a
+  // large net otherwise).
+  const auto angle = [&] { return frame.coordinate_a + (delta_angle(b) - delta_angle(a)); };
   if (def.spring.enabled && turns) {
     solve_angular_spring(a, b, frame, joint.axial_mass, joint.spring_soft,
-                         angle - def.spring.target, joint.spring_impulse);
+                         angle() - def.spring.target, joint.spring_impulse);
   }
   if (def.motor.enabled && turns) {
     solve_angular_motor(a, b, frame, joint.axial_mass, def.motor, joint.motor_impulse);
   }
   if (def.limit.enabled && turns) {
-    solve_angular_limits(a, b, frame, joint.axial_mass, angle, def.limit, use_bias,
+    solve_angular_limits(a, b, frame, joint.axial_mass, angle(), def.limit, use_bias,
                          joint.lower_impulse, joint.upper_impulse);
   }
   if (!joint.direct) solve_point(a, b, frame, use_bias, joint.linear_impulse);

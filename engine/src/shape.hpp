@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "mink/broadphase/broadphase.hpp"
@@ -46,6 +48,31 @@ struct Shape {
   // exactly (a seam between tiles); empty when none is. See seam.cpp.
   std::vector<std::uint8_t> internal_edges;
 };
+
+// Calls visit(point) for each point of the shape's core (a hull's vertices, a capsule's two
+// centres, ...): every shape is its core grown by its radius.
+template <typename Visit>
+void for_each_core_point(const ShapeGeometry& geometry, Visit&& visit) {
+  std::visit(
+      [&](const auto& g) {
+        using G = std::decay_t<decltype(g)>;
+        if constexpr (std::is_same_v<G, Circle>) {
+          visit(g.center);
+        } else if constexpr (std::is_same_v<G, Capsule>) {
+          visit(g.center1);
+          visit(g.center2);
+        } else if constexpr (std::is_same_v<G, Segment>) {
+          visit(g.point1);
+          visit(g.point2);
+        } else if constexpr (std::is_same_v<G, ChainSegment>) {
+          visit(g.segment.point1);
+          visit(g.segment.point2);
+        } else {
+          for (const Vec2& v : g.hull.vertices()) visit(v);
+        }
+      },
+      geometry);
+}
 
 // The narrowphase geometry a (checked) ShapeDef describes; polygons are hulled here.
 ShapeGeometry make_geometry(const ShapeDef& def);

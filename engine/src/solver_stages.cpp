@@ -272,31 +272,36 @@ void WorldState::solve() {
     }
   }
 
-  // Write poses back: centre moved by dp, rotation composed with the step's rotation.
-  tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 256,
+  // Each body's step finished in one visit while its records are at hand, bodies in parallel.
+  if (def.enable_continuous) continuous.prepare_marks(solver_to_body.size());
+  tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 128,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-                       for (std::uint32_t si = begin; si < end; ++si) write_back(si);
+                       for (std::uint32_t si = begin; si < end; ++si) finish_body(si);
                      });
 }
 
+// Its pose and velocity back from the solver, its shapes' boxes at the new pose (the
+// broadphase takes them in finish_step), its sleep timer, and whether continuous collision
+// must sweep it.
+void WorldState::finish_body(std::uint32_t solver_index) {
+  write_back(solver_index);
+  Body& b = bodies[solver_to_body[solver_index]];
+  for (const std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b, dt);
+  const Real linear_tolerance = def.linear_sleep_tolerance;
+  const Real angular_tolerance = def.angular_sleep_tolerance;
+  if (!def.enable_sleep || !b.allow_sleep || b.type != BodyType::dynamic ||
+      b.velocity.squaredNorm() > linear_tolerance * linear_tolerance ||
+      b.angular_velocity * b.angular_velocity > angular_tolerance * angular_tolerance) {
+    b.sleep_time = 0;
+  } else {
+    b.sleep_time += dt;
+  }
+  if (def.enable_continuous) mark_if_fast(solver_index);
+}
+
 void WorldState::finish_step() {
-  const Real linear_tolerance_squared = def.linear_sleep_tolerance * def.linear_sleep_tolerance;
-  const Real angular_tolerance_squared = def.angular_sleep_tolerance * def.angular_sleep_tolerance;
-  // Boxes and sleep timers per body in parallel; the broadphase takes the boxes after, in order.
-  tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 128,
-                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-                       for (std::uint32_t si = begin; si < end; ++si) {
-                         Body& b = bodies[solver_to_body[si]];
-                         for (std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b, dt);
-                         if (!def.enable_sleep || !b.allow_sleep || b.type != BodyType::dynamic ||
-                             b.velocity.squaredNorm() > linear_tolerance_squared ||
-                             b.angular_velocity * b.angular_velocity > angular_tolerance_squared) {
-                           b.sleep_time = 0;
-                         } else {
-                           b.sleep_time += dt;
-                         }
-                       }
-                     });
+  // The boxes finish_body left (and continuous collision redid for bodies it stopped short),
+  // to the broadphase in order.
   for (const std::uint32_t i : solver_to_body) {
     for (std::uint32_t s : bodies[i].shapes) {
       if (shapes[s].proxy != null_proxy) broadphase.move_proxy(shapes[s].proxy, shapes[s].aabb);

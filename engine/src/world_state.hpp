@@ -160,9 +160,13 @@ struct WorldState {
   void solve();
   // Solver body `solver_index`'s velocity and pose back into its body record.
   void write_back(std::uint32_t solver_index);
+  void finish_body(std::uint32_t solver_index);
   void finish_step();
   // continuous.cpp (before finish_step: it needs the step's solver records)
   void solve_continuous();
+  // From finish_body: marks the body for continuous collision when it moved fast, with the
+  // box over its step.
+  void mark_if_fast(std::uint32_t solver_index);
   Sweep solver_sweep(std::uint32_t solver_index) const;
   Sweep body_sweep(std::uint32_t body) const;
   void sweep_pair(detail::FastBody& fast, std::uint32_t other_shape,
