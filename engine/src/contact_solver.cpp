@@ -177,6 +177,8 @@ namespace {
 enum class StageKind : std::uint8_t {
   integrate_velocities,
   joint_warm_start,
+  joint_chains_solve,
+  joint_chains_relax,
   warm_start,
   joint_solve,
   solve,
@@ -228,15 +230,29 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
     if (end > begin) stages_.push_back({kind, kColorCount, begin, end, end - begin});
   };
   const bool with_joints = joints != nullptr;
+  // Joints colour by colour as the contacts (a colour's joints share no moving body either),
+  // the chains' direct solve first in each solve, the overflow one at a time.
+  const auto joint_stages = [&](StageKind kind) {
+    if (!with_joints) return;
+    const std::vector<std::uint32_t>& begin = joints->color_begin();
+    for (std::uint32_t c = 0; c <= kColorCount; ++c) {
+      const std::uint32_t first = begin[c], last = begin[c + 1];
+      if (last == first) continue;
+      const std::uint32_t size = c == kColorCount ? last - first : split(last - first, 16);
+      stages_.push_back({kind, c, first, last, size});
+    }
+  };
   stages_.push_back({StageKind::integrate_velocities, 0, 0, body_count, split(body_count, 64)});
-  if (with_joints) stages_.push_back({StageKind::joint_warm_start, 0, 0, 1, 1});
+  joint_stages(StageKind::joint_warm_start);
   colour_stages(StageKind::warm_start);
   for (int i = 0; with_joints && i < settings.joint_iterations; ++i) {
-    stages_.push_back({StageKind::joint_solve, 0, 0, 1, 1});
+    stages_.push_back({StageKind::joint_chains_solve, 0, 0, 1, 1});
+    joint_stages(StageKind::joint_solve);
   }
   colour_stages(StageKind::solve);
   stages_.push_back({StageKind::integrate_positions, 0, 0, body_count, split(body_count, 64)});
-  if (with_joints) stages_.push_back({StageKind::joint_relax, 0, 0, 1, 1});
+  if (with_joints) stages_.push_back({StageKind::joint_chains_relax, 0, 0, 1, 1});
+  joint_stages(StageKind::joint_relax);
   colour_stages(StageKind::relax);
   const std::size_t per_substep = stages_.size();
   stage_blocks_.clear();
@@ -275,13 +291,15 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
         integrate_positions(x.bodies.subspan(begin, end - begin), x.settings->h);
         return;
       case StageKind::joint_warm_start:
-        x.joints->warm_start(body_data);
+        x.joints->warm_start(body_data, begin, end);
+        return;
+      case StageKind::joint_chains_solve:
+      case StageKind::joint_chains_relax:
+        x.joints->solve_chains(body_data, st.kind == StageKind::joint_chains_solve);
         return;
       case StageKind::joint_solve:
-        x.joints->solve(body_data, true);
-        return;
       case StageKind::joint_relax:
-        x.joints->solve(body_data, false);
+        x.joints->solve(body_data, st.kind == StageKind::joint_solve, begin, end);
         return;
       case StageKind::warm_start:
         if (self.wide_mode_ && !overflow) {

@@ -23,7 +23,6 @@ struct Joint {
   // Constraint graph colour, and the body flags it was taken with (so it can be given back).
   std::uint8_t color = kNoColor;
   bool a_fixed = false, b_fixed = false;
-  std::uint64_t gathered_step = ~std::uint64_t{0};  // the step that last listed it to solve
   JointFrame frame;
   JointReaction reaction;  // of the last step it was solved in
 };

@@ -4,6 +4,7 @@
 // each joint records the force it applied, reports a break, and settles its coordinate.
 
 #include <algorithm>
+#include <bit>
 
 #include "joint_solver.hpp"
 #include "world_state.hpp"
@@ -15,19 +16,22 @@ using detail::Joint;
 
 namespace detail {
 
-void JointStages::warm_start(SolverBody* bodies) {
-  for (const std::uint32_t j : *order_) {
-    Joint& joint = (*joints_)[j];
+void JointStages::warm_start(SolverBody* bodies, std::uint32_t begin, std::uint32_t end) {
+  for (std::uint32_t i = begin; i < end; ++i) {
+    Joint& joint = (*joints_)[(*order_)[i]];
     std::visit([&](auto& k) { detail::warm_start(k, joint.frame, bodies); }, joint.kind);
   }
 }
 
-void JointStages::solve(SolverBody* bodies, bool use_bias) {
-  // The chains' point rows first: the one-at-a-time rows after them (motors, limits, gears)
-  // then end each pass satisfied, as they would alone.
+// The chains' point rows come first in a solve: the one-at-a-time rows after them (motors,
+// limits, gears) then end each pass satisfied, as they would alone.
+void JointStages::solve_chains(SolverBody* bodies, bool use_bias) {
   chains_.solve(*joints_, bodies, use_bias);
-  for (const std::uint32_t j : *order_) {
-    Joint& joint = (*joints_)[j];
+}
+
+void JointStages::solve(SolverBody* bodies, bool use_bias, std::uint32_t begin, std::uint32_t end) {
+  for (std::uint32_t i = begin; i < end; ++i) {
+    Joint& joint = (*joints_)[(*order_)[i]];
     std::visit([&](auto& k) { detail::solve(k, joint.frame, bodies, use_bias); }, joint.kind);
   }
 }
@@ -35,31 +39,79 @@ void JointStages::solve(SolverBody* bodies, bool use_bias) {
 }  // namespace detail
 
 void WorldState::prepare_joints() {
-  step_joints.clear();
+  // The joints of moving bodies: marked from the bodies' lists, read off in slot order into
+  // their colours (the overflow last), which is the order they are solved in.
+  joint_marks.assign((joints.size() + 63) / 64, 0);
   for (const std::uint32_t i : solver_to_body) {
     for (const std::uint32_t j : bodies[i].joints) {
-      Joint& joint = joints[j];
-      if (joint.gathered_step == step_count) continue;
-      joint.gathered_step = step_count;
+      joint_marks[j >> 6] |= std::uint64_t{1} << (j & 63);
+    }
+  }
+  constexpr std::size_t kColors = detail::kGraphColors + 1;
+  joint_color_begin.assign(kColors + 1, 0);
+  step_joints.clear();
+  for (std::size_t word = 0; word < joint_marks.size(); ++word) {
+    for (std::uint64_t bits = joint_marks[word]; bits != 0; bits &= bits - 1) {
+      const auto j = static_cast<std::uint32_t>(word * 64 + std::countr_zero(bits));
+      const Joint& joint = joints[j];
       bool enabled = true, dynamic = false;
       for (int k = 0; k < joint.body_count; ++k) {
         const Body& b = bodies[joint.body[k]];
         enabled = enabled && b.enabled;
         dynamic = dynamic || b.type == BodyType::dynamic;
       }
-      if (enabled && dynamic) step_joints.push_back(j);
+      if (!enabled || !dynamic) continue;
+      step_joints.push_back(j);
+      ++joint_color_begin[std::min<std::size_t>(joint.color, kColors - 1) + 1];
     }
   }
-  std::sort(step_joints.begin(), step_joints.end(), [&](std::uint32_t x, std::uint32_t y) {
-    const std::uint8_t cx = joints[x].color, cy = joints[y].color;
-    return cx != cy ? cx < cy : x < y;
-  });
+  for (std::size_t c = 1; c <= kColors; ++c) joint_color_begin[c] += joint_color_begin[c - 1];
+  joint_order.resize(step_joints.size());
+  {
+    std::vector<std::uint32_t>& fill = joint_fill;
+    fill.assign(joint_color_begin.begin(), joint_color_begin.end() - 1);
+    for (const std::uint32_t j : step_joints) {
+      joint_order[fill[std::min<std::size_t>(joints[j].color, kColors - 1)]++] = j;
+    }
+    step_joints.swap(joint_order);
+  }
   counters.joints = step_joints.size();
 
   const Real h = dt / substeps;
   const Real joint_hertz = std::min(def.joint_hertz, 0.25 * substeps / dt);
   const detail::Softness soft = detail::make_softness(joint_hertz, def.joint_damping_ratio, h);
-  for (const std::uint32_t j : step_joints) {
+  // A joint's static, sleeping or kinematic body gets a solver record of the joint's own (a
+  // copy that moves as the body does): a colour's joints may share such a body, and run on
+  // different workers, and the rows write every body they touch. Slots after the solver's.
+  joint_own_slots.assign(step_joints.size() + 1, 0);
+  const auto fixed = [&](std::uint32_t body) {
+    const std::int32_t s = body_solver_index[body];
+    return s < 0 || (solver_info[static_cast<std::size_t>(s)].inv_mass == 0 &&
+                     solver_info[static_cast<std::size_t>(s)].inv_inertia == 0);
+  };
+  for (std::size_t i = 0; i < step_joints.size(); ++i) {
+    const Joint& joint = joints[step_joints[i]];
+    std::uint32_t own = 0;
+    for (int k = 0; k < joint.body_count; ++k) own += fixed(joint.body[k]) ? 1 : 0;
+    joint_own_slots[i + 1] = joint_own_slots[i] + own;
+  }
+  const auto first_own = static_cast<std::uint32_t>(solver_bodies.size());
+  solver_bodies.resize(first_own + joint_own_slots.back());
+  solver_params.resize(solver_bodies.size());
+  // Each joint's frame is its own, so they are made in parallel.
+  tasks.parallel_for(static_cast<std::uint32_t>(step_joints.size()), 64,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       for (std::uint32_t i = begin; i < end; ++i) {
+                         prepare_joint(step_joints[i], first_own + joint_own_slots[i], h, soft);
+                       }
+                     });
+  joint_stages.set(&joints, &step_joints, &joint_color_begin);
+  joint_stages.chains().build(joints, step_joints, def.direct_joint_chains);
+}
+
+void WorldState::prepare_joint(std::uint32_t j, std::uint32_t own_slot, Real h,
+                               const detail::Softness& soft) {
+  {
     Joint& joint = joints[j];
     detail::JointFrame& frame = joint.frame;
     frame = detail::JointFrame{};
@@ -71,13 +123,21 @@ void WorldState::prepare_joints() {
       const Body& b = bodies[bi];
       detail::JointBody& jb = frame.bodies[static_cast<std::size_t>(k)];
       const std::int32_t s = body_solver_index[bi];
-      jb.solver = s < 0 ? still_body : s;
       jb.center = b.center;
       jb.rotation = b.rotation;
       jb.local_center = b.local_center;
       if (s >= 0) {
         jb.inv_mass = solver_info[static_cast<std::size_t>(s)].inv_mass;
         jb.inv_inertia = solver_info[static_cast<std::size_t>(s)].inv_inertia;
+      }
+      if (jb.inv_mass == 0 && jb.inv_inertia == 0) {
+        // The joint's own copy: the still body's rest, or a kinematic body's motion.
+        jb.solver = static_cast<std::int32_t>(own_slot++);
+        solver_bodies[static_cast<std::size_t>(jb.solver)] =
+            s < 0 ? detail::SolverBody{} : solver_bodies[static_cast<std::size_t>(s)];
+        solver_params[static_cast<std::size_t>(jb.solver)] = detail::SolverBodyParams{};
+      } else {
+        jb.solver = s;
       }
     }
     if (joint.body_count == 4) {
@@ -87,8 +147,6 @@ void WorldState::prepare_joints() {
     }
     std::visit([&](auto& k) { detail::prepare(k, frame); }, joint.kind);
   }
-  joint_stages.set(&joints, &step_joints);
-  joint_stages.chains().build(joints, step_joints, def.direct_joint_chains);
 }
 
 void WorldState::finish_joints() {

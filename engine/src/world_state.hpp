@@ -81,8 +81,12 @@ struct WorldState {
   std::vector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
   std::vector<detail::ConstraintBodies> constraint_bodies, sorted_bodies;
   detail::ContactSolver contact_solver;
-  std::int32_t still_body = 0;             // the solver body standing in for the unmoving
-  std::vector<std::uint32_t> step_joints;  // joints of moving bodies this step, solve order
+  std::int32_t still_body = 0;                   // the solver body standing in for the unmoving
+  std::vector<std::uint32_t> step_joints;        // joints of moving bodies this step, solve order
+  std::vector<std::uint32_t> joint_color_begin;  // where each colour starts in step_joints
+  std::vector<std::uint64_t> joint_marks;        // one bit per joint slot, while gathering
+  std::vector<std::uint32_t> joint_order, joint_fill;
+  std::vector<std::uint32_t> joint_own_slots;  // per step joint: its first own solver record
   detail::JointStages joint_stages;
   std::vector<std::uint64_t> island_stamp;  // per body: the step whose island pass reached it
   std::vector<std::uint32_t> island_stack, island_members, woken;
@@ -154,6 +158,8 @@ struct WorldState {
   void wake_joint_bodies(std::uint32_t index);
   // joint_solver.cpp
   void prepare_joints();
+  void prepare_joint(std::uint32_t index, std::uint32_t own_slot, Real h,
+                     const detail::Softness& soft);
   void finish_joints();
   // solver_stages.cpp
   void prepare_contacts();
