@@ -245,18 +245,6 @@ void WorldState::solve_continuous() {
 
   const auto count = static_cast<std::uint32_t>(continuous.fast.size());
   continuous.candidates.resize(tasks.workers());
-  // Kinematic shapes, and whether there is anything static or kinematic to meet at all (in
-  // a world of dynamic bodies only, a fast body that is no bullet has nothing to sweep).
-  continuous.kinematic_shapes.clear();
-  bool fixed_shapes = false;
-  for (const Body& b : bodies) {
-    if (!b.alive || !b.enabled || b.type == BodyType::dynamic || b.shapes.empty()) continue;
-    fixed_shapes = true;
-    if (b.type != BodyType::kinematic) continue;
-    for (const std::uint32_t s : b.shapes) {
-      if (shapes[s].proxy != null_proxy) continuous.kinematic_shapes.push_back(s);
-    }
-  }
   // The sweep (two arc tangents) waits until a body has something to meet, which most fast
   // bodies, in free flight, do not; fast bodies meet each other on both their sweeps, so
   // every sweep is needed then.
@@ -295,9 +283,7 @@ void WorldState::solve_continuous() {
         if (broadphase.fat_aabb(o.proxy).overlaps(fast.box)) found.push_back(index);
       };
       const Body& body = bodies[fast.body];
-      if (!fast.bullet && !fixed_shapes) {
-        // Nothing static or kinematic in the world.
-      } else if (fast.covered && !fast.bullet) {
+      if (fast.covered && !fast.bullet) {
         // Up to the last of its contacts with something static or kinematic.
         std::uint32_t left = body.fixed_contacts;
         for (std::size_t k = 0; left > 0; ++k) {
@@ -308,21 +294,15 @@ void WorldState::solve_continuous() {
           add_if_met(a_is_fast ? contact.shape_b : contact.shape_a);
         }
       } else {
+        // Rare: a body that left its broadphase boxes, or a bullet.
         proxies.clear();
-        if (fast.bullet) {
-          broadphase.query(fast.box, proxies);
-        } else {
-          broadphase.query_static(fast.box, proxies);
-        }
+        broadphase.query(fast.box, proxies);
         for (const ProxyId proxy : proxies) {
           const auto index = static_cast<std::uint32_t>(broadphase.user_data(proxy));
           if (index >= shapes.size()) continue;
           const Shape& o = shapes[index];
           if (!o.alive || o.proxy != proxy || o.body == fast.body) continue;
-          found.push_back(index);
-        }
-        if (!fast.bullet) {
-          for (const std::uint32_t index : continuous.kinematic_shapes) add_if_met(index);
+          if (fast.bullet || bodies[o.body].type != BodyType::dynamic) found.push_back(index);
         }
       }
       if (!fast.has_sweep && !found.empty()) {

@@ -40,9 +40,6 @@ struct ContinuousState {
   std::vector<FastBody> fast;
   std::vector<std::uint32_t> fast_by_x;  // indices into `fast`, by their box's lower x
   std::vector<std::vector<std::uint32_t>> candidates;
-  // Shapes of kinematic bodies, which the broadphase files with the moving ones: a fast body
-  // asks the broadphase for static shapes only and tests these itself.
-  std::vector<std::uint32_t> kinematic_shapes;
   std::size_t hits = 0;  // fast bodies stopped short this step
 };
 
