@@ -143,6 +143,23 @@ bool clear_of_a_face(const ShapeGeometry& moving, const Sweep& sweep, const Shap
   return clear;
 }
 
+// How far a point of `moving` can travel in `frame`'s body frame over the step: its centre's
+// travel there plus its turn against that frame at its extent. A body slow in another's frame
+// is the speculative contacts' to keep from it, as a slow body is beside a still one: bodies
+// carried round by a turning kinematic body, or falling together, need no time of impact.
+Real travel_relative_to(const Sweep& moving, Real extent, const Sweep& frame) {
+  const Rotation start = Rotation::from_angle(frame.angle0);
+  const Rotation end = Rotation::from_angle(frame.angle1);
+  const Vec2 travel = end.apply_inverse(moving.center1 - frame.center1) -
+                      start.apply_inverse(moving.center0 - frame.center0);
+  const Real turn = (moving.angle1 - moving.angle0) - (frame.angle1 - frame.angle0);
+  return travel.norm() + std::abs(turn) * extent;
+}
+
+bool is_still(const Sweep& sweep) {
+  return sweep.center0 == sweep.center1 && sweep.angle0 == sweep.angle1;
+}
+
 }  // namespace
 
 // The first touch of `fast`'s shapes with `other_shape` moving by `other_sweep`, if it comes
@@ -155,8 +172,7 @@ void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
   const Shape& o = shapes[other_shape];
   // Beside a still shape, most sweeps stay outside one of its faces: cheaper to see than any
   // time of impact.
-  const bool still =
-      other_sweep.center0 == other_sweep.center1 && other_sweep.angle0 == other_sweep.angle1;
+  const bool still = is_still(other_sweep);
   const Pose still_pose = other_sweep.pose_at(0);
   for (const std::uint32_t s : bodies[fast.body].shapes) {
     const Shape& f = shapes[s];
@@ -314,14 +330,27 @@ void WorldState::solve_continuous() {
       // body's shapes is swept once).
       std::sort(found.begin(), found.end());
       found.erase(std::unique(found.begin(), found.end()), found.end());
-      for (const std::uint32_t index : found)
-        sweep_pair(fast, index, body_sweep(shapes[index].body));
+      const Real slow = body.continuous_threshold * body.min_extent;
+      for (const std::uint32_t index : found) {
+        const Sweep other = body_sweep(shapes[index].body);
+        if (!fast.bullet && !is_still(other) &&
+            travel_relative_to(fast.sweep, body.extent, other) <= slow) {
+          continue;
+        }
+        sweep_pair(fast, index, other);
+      }
       // Other fast bodies (a bullet has met every dynamic shape already).
       if (fast.bullet || !def.continuous_fast_pairs) continue;
       for (const std::uint32_t j : continuous.fast_by_x) {
         const FastBody& other = continuous.fast[j];
         if (other.box.lower.x() > fast.box.upper.x()) break;
         if (j == i || other.bullet || !other.box.overlaps(fast.box)) continue;
+        const Body& other_body = bodies[other.body];
+        const Real limit = std::min(slow, other_body.continuous_threshold * other_body.min_extent);
+        if (travel_relative_to(fast.sweep, body.extent, other.sweep) <= limit &&
+            travel_relative_to(other.sweep, other_body.extent, fast.sweep) <= limit) {
+          continue;
+        }
         for (const std::uint32_t s : bodies[other.body].shapes) sweep_pair(fast, s, other.sweep);
       }
     }
