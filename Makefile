@@ -8,7 +8,7 @@ CTEST_FLAGS ?= --output-on-failure
 PYTHON ?= $(shell test -x /usr/bin/python3 && echo /usr/bin/python3 || command -v python3)
 CONFIGURE = cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DPython3_EXECUTABLE=$(PYTHON)
 
-.PHONY: all deps build python demo test bench docs format clean sanitize-test tsan-test
+.PHONY: all deps build python demo test bench docs format clean sanitize-test tsan-test soak
 
 all: build
 
@@ -71,6 +71,13 @@ tsan-test: deps-test
 	  -DMINK_TSAN=ON $(CMAKE_FLAGS)
 	cmake --build build-tsan -j $(JOBS) --target mink_engine_tests
 	TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" build-tsan/bin/mink_engine_tests
+
+# The full soak: 10 randomised scenes of 10^4 steps at 1 and 2 workers (see
+# tests/engine/soak.hpp); the tests run a shorter one.
+soak: deps-test
+	$(CONFIGURE) -DMINK_BUILD_TESTS=ON $(CMAKE_FLAGS)
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target mink_soak
+	$(BUILD_DIR)/bin/mink_soak 10 10000
 
 bench: deps-bench
 	$(CONFIGURE) -DMINK_BUILD_BENCH=ON $(CMAKE_FLAGS)

@@ -16,10 +16,10 @@ constexpr std::string_view kWhat = "--trace file";
 BodyTrace::BodyTrace(const std::filesystem::path& path, std::span<const BodyId> bodies,
                      std::uint64_t every)
     : path_(path),
-      out_(open_output_file(path, kWhat)),
+      out_(path, std::string(kWhat)),
       bodies_(bodies.begin(), bodies.end()),
       every_(every) {
-  out_ << "step,body,x,y,angle,vx,vy,w\n";
+  out_.stream() << "step,body,x,y,angle,vx,vy,w\n";
 }
 
 void BodyTrace::write_step(const World& world) {
@@ -37,13 +37,13 @@ void BodyTrace::write_step(const World& world) {
     std::snprintf(row, sizeof row, "%llu,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
                   static_cast<unsigned long long>(step), i, p.x(), p.y(), world.angle(body), v.x(),
                   v.y(), w);
-    out_ << row;
+    out_.stream() << row;
     ++rows_;
   }
 }
 
 void BodyTrace::close() {
-  close_output_file(out_, path_, kWhat);
+  out_.commit();
 }
 
 }  // namespace mink::cli

@@ -2,11 +2,11 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <span>
 #include <vector>
 
 #include "mink/engine/world.hpp"
+#include "mink/output_file.hpp"
 
 namespace mink::cli {
 
@@ -30,7 +30,7 @@ class BodyTrace {
 
  private:
   std::filesystem::path path_;
-  std::ofstream out_;
+  OutputFile out_;
   std::vector<BodyId> bodies_;
   std::uint64_t every_;
   std::uint64_t rows_ = 0;

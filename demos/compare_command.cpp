@@ -98,7 +98,8 @@ void report_trajectories(const TrajectoryRecorder& t, const CompareOptions& opti
                          const SceneDef& scene, GlBackend backend, std::ostream& out) {
   const std::filesystem::path dir(options.out);
   {
-    std::ofstream csv = open_output_file(dir / "trajectories.csv", "the trajectories");
+    OutputFile file(dir / "trajectories.csv", "the trajectories");
+    std::ostream& csv = file.stream();
     csv << "step,body,mink_x,mink_y,box2d_x,box2d_y,distance\n";
     char line[256];
     for (const TrajectoryRow& row : t.rows()) {
@@ -106,17 +107,18 @@ void report_trajectories(const TrajectoryRecorder& t, const CompareOptions& opti
                     row.mink.x(), row.mink.y(), row.box2d.x(), row.box2d.y(), row.distance);
       csv << line;
     }
-    close_output_file(csv, dir / "trajectories.csv", "the trajectories");
+    file.commit();
   }
   if (!t.gaps().empty()) {
-    std::ofstream csv = open_output_file(dir / "joint_gaps.csv", "the joint gaps");
+    OutputFile file(dir / "joint_gaps.csv", "the joint gaps");
+    std::ostream& csv = file.stream();
     csv << "step,mink,box2d\n";
     char line[128];
     for (const JointGapRow& g : t.gaps()) {
       std::snprintf(line, sizeof line, "%lld,%.9g,%.9g\n", g.step, g.mink, g.box2d);
       csv << line;
     }
-    close_output_file(csv, dir / "joint_gaps.csv", "the joint gaps");
+    file.commit();
   }
   write_line_plot(trajectory_panels(t, plot_name(options.scene)), backend,
                   dir / "trajectories.png");
@@ -176,13 +178,14 @@ int run_compare(const CompareOptions& options, Streams streams) {
   const std::filesystem::path out(options.out);
   make_directories(out, "--out");
   {
-    std::ofstream csv = open_output_file(out / "contacts.csv", "the contact counts");
+    OutputFile file(out / "contacts.csv", "the contact counts");
+    std::ostream& csv = file.stream();
     csv << "step,mink_pairs,mink_contacts,box2d_pairs,box2d_touching\n";
     for (const ContactCountRow& row : c.rows) {
       csv << row.step << ',' << row.mink_pairs << ',' << row.mink_contacts << ',' << row.box2d_pairs
           << ',' << row.box2d_touching << '\n';
     }
-    close_output_file(csv, out / "contacts.csv", "the contact counts");
+    file.commit();
   }
   write_line_plot({count_panel(c, plot_name(options.scene))}, backend, out / "contacts.png");
 

@@ -29,7 +29,7 @@ struct EventLog::Line {
 
 EventLog::EventLog(const std::filesystem::path& path, const World& world,
                    std::span<const BodyId> bodies, std::span<const JointId> joints)
-    : path_(path), out_(open_output_file(path, kWhat)) {
+    : path_(path), out_(path, std::string(kWhat)) {
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     body_indices_[key(bodies[i])] = i;
     for (const ShapeId shape : world.body_shapes(bodies[i])) shape_bodies_[key(shape)] = i;
@@ -50,7 +50,7 @@ void EventLog::write_step(const World& world) {
 }
 
 void EventLog::close() {
-  close_output_file(out_, path_, kWhat);
+  out_.commit();
 }
 
 void EventLog::contact_begin(const World& world, const ContactBeginEvent& event) {
@@ -119,7 +119,7 @@ EventLog::Line EventLog::pair_line(const World& world, std::string_view type, Sh
 }
 
 void EventLog::write_line(const Line& line) {
-  out_ << line.json.dump() << '\n';
+  out_.stream() << line.json.dump() << '\n';
   ++events_;
 }
 

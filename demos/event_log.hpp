@@ -3,13 +3,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <span>
 #include <string_view>
 #include <unordered_map>
 
 #include "mink/engine/world.hpp"
+#include "mink/output_file.hpp"
 
 namespace mink::cli {
 
@@ -58,7 +58,7 @@ class EventLog {
   std::optional<std::size_t> body_index(const World& world, ShapeId shape) const;
 
   std::filesystem::path path_;
-  std::ofstream out_;
+  OutputFile out_;
   std::uint64_t step_ = 0;
   std::size_t events_ = 0;
   // Body slot -> scene index, and every shape's body index as the run began: end events may

@@ -12,6 +12,7 @@ namespace mink::cli {
 int report_error(const std::exception& error, std::ostream& err) {
   err << "mink: " << error.what() << '\n';
   if (dynamic_cast<const DegenerateInputError*>(&error) != nullptr) return kDegenerate;
+  if (dynamic_cast<const FileWriteError*>(&error) != nullptr) return kOutputFailure;
   // Checked before Error: these derive from it but say nothing about the input.
   if (dynamic_cast<const GlContextError*>(&error) != nullptr ||
       dynamic_cast<const OutputError*>(&error) != nullptr ||

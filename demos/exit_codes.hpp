@@ -11,7 +11,9 @@ enum ExitCode : int {
   kInternalError = 1,   // a bug: a failure nothing else explains
   kBadInput = 2,        // usage errors, unreadable files, malformed lines, non-finite values
   kDegenerate = 3,      // a point set with no area: fewer than 3 distinct non-collinear points
-  kRuntimeFailure = 4,  // the environment failed: GL, ffmpeg, the file system
+  kRuntimeFailure = 4,  // the environment failed: GL, ffmpeg, a program or module missing
+  kOutputFailure = 5,   // an output file or directory could not be written: no permission, a
+                        // full disk, a path through a file (earlier files of its name survive)
 };
 
 // Maps an exception from a command to its exit code and prints "mink: <message>" to `err`.

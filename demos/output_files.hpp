@@ -1,24 +1,20 @@
 #pragma once
 
 #include <filesystem>
-#include <fstream>
 #include <string_view>
+
+#include "mink/output_file.hpp"
 
 namespace mink::cli {
 
-// Files and directories the commands write. A failure here is the environment's (a path
-// through a regular file, no permission, a full disk), not the user's input, so these throw
-// OutputError, which `mink` reports with exit code 4. `what` names the output in messages,
-// e.g. "--stats file".
+// Files and directories the commands write. Each file is a mink::OutputFile: written under a
+// temporary name and renamed when complete, so a command stopped part-way (killed, a full
+// disk) never leaves a truncated output nor destroys an earlier file of that name. A failure
+// is the environment's (a path through a regular file, no permission, a full disk), not the
+// user's input: FileWriteError, which `mink` reports with exit code 5. `what` names the output
+// in messages, e.g. "--stats file".
 
 // Creates `directory` and its parents unless they exist.
 void make_directories(const std::filesystem::path& directory, std::string_view what);
-
-// Opens `file` for writing (text, truncated), creating its parent directories first.
-std::ofstream open_output_file(const std::filesystem::path& file, std::string_view what);
-
-// Closes `out` and throws when anything written to it was lost.
-void close_output_file(std::ofstream& out, const std::filesystem::path& file,
-                       std::string_view what);
 
 }  // namespace mink::cli

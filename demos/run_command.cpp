@@ -145,11 +145,14 @@ int run_scene(const RunOptions& options, Streams streams) {
       video_sink = open_frame_sink(options.video, width, height, video);
     }
   }
-  std::ofstream stats;
+  // Every output goes to a temporary file until the run is complete: a run stopped part-way
+  // leaves what was there before.
+  std::optional<OutputFile> stats;
   if (!options.stats.empty()) {
-    stats = open_output_file(options.stats, "--stats file");
-    stats << "step,time,bodies,awake,pairs,contacts,kinetic_energy,step_ms,pairs_ms,collide_ms,"
-             "islands_ms,prepare_ms,solve_ms,continuous_ms,finish_ms,fast_bodies,continuous_hits\n";
+    stats.emplace(options.stats, "--stats file");
+    stats->stream()
+        << "step,time,bodies,awake,pairs,contacts,kinetic_energy,step_ms,pairs_ms,collide_ms,"
+           "islands_ms,prepare_ms,solve_ms,continuous_ms,finish_ms,fast_bodies,continuous_hits\n";
   }
   std::optional<BodyTrace> trace;
   if (!options.trace.empty()) {
@@ -188,7 +191,7 @@ int run_scene(const RunOptions& options, Streams streams) {
     total_ms += ms;
     const StepCounters& c = world.counters();
     contacts_sum += c.touching_contacts;
-    if (stats.is_open()) {
+    if (stats) {
       const StepProfile& p = world.profile();
       std::snprintf(
           line, sizeof line,
@@ -197,7 +200,7 @@ int run_scene(const RunOptions& options, Streams streams) {
           c.awake_bodies, c.broadphase_pairs, c.touching_contacts, kinetic_energy(world), ms,
           p.pairs, p.collide, p.islands, p.prepare, p.solve, p.continuous, p.finish, c.fast_bodies,
           c.continuous_hits);
-      stats << line;
+      stats->stream() << line;
     }
     if (trace) trace->write_step(world);
     if (events) events->write_step(world);
@@ -208,7 +211,7 @@ int run_scene(const RunOptions& options, Streams streams) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   if (png_sink) png_sink->close();
   if (video_sink) video_sink->close();
-  if (stats.is_open()) close_output_file(stats, options.stats, "--stats file");
+  if (stats) stats->commit();
   if (trace) trace->close();
   if (events) events->close();
   if (!options.save.empty()) save_scene_file(options.save, capture_scene(world));

@@ -155,6 +155,15 @@ void WorldState::update_pairs() {
   pair_events.begun.clear();
   pair_events.ended.clear();
   broadphase.update_pairs(pair_events);
+  // The broadphase reports pairs in its sweep order, which follows the coordinates rounded to
+  // floats; taken in id order instead, contacts are made and removed, and so coloured and
+  // solved, in an order that does not depend on where the scene lies (10^7 m from the origin
+  // float keys tie where they did not at the origin).
+  const auto by_ids = [](const ProxyPair& x, const ProxyPair& y) {
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  };
+  std::sort(pair_events.ended.begin(), pair_events.ended.end(), by_ids);
+  std::sort(pair_events.begun.begin(), pair_events.begun.end(), by_ids);
 
   for (const ProxyPair& pair : pair_events.ended) {
     const auto found = contact_index.find(detail::pair_key(pair.a, pair.b));

@@ -31,6 +31,22 @@ Pose scene_body_pose(const SceneDef& scene, std::size_t index) {
   return {body.position, Rotation::from_angle(body.angle)};
 }
 
+void shift_scene(SceneDef& scene, const Vec2& offset) {
+  if (!std::isfinite(offset.x()) || !std::isfinite(offset.y())) {
+    throw InvalidArgumentError("scene offset is not finite");
+  }
+  if (scene.schedule) {
+    throw InvalidArgumentError("a scene with a schedule cannot be shifted: its actions are code");
+  }
+  for (SceneBody& body : scene.bodies) body.body.position += offset;
+  for (SceneJoint& joint : scene.joints) {
+    if (auto* pulley = std::get_if<PulleyJointDef>(&joint.def)) {
+      pulley->ground_anchor_a += offset;
+      pulley->ground_anchor_b += offset;
+    }
+  }
+}
+
 namespace {
 
 std::string joint_path(std::size_t joint, const char* field) {

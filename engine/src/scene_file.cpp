@@ -1,5 +1,7 @@
 #include "mink/engine/scene_file.hpp"
 
+#include "mink/output_file.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -753,16 +755,9 @@ std::string scene_to_json(const SceneDef& scene) {
 
 void save_scene_file(const std::filesystem::path& path, const SceneDef& scene) {
   const std::string text = scene_to_json(scene);
-  std::error_code error;
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), error);
-  if (error) {
-    throw OutputError("cannot create the directory '" + path.parent_path().string() +
-                      "' for scene file '" + path.string() + "': " + error.message());
-  }
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw OutputError("cannot write scene file '" + path.string() + "'");
+  OutputFile out(path, "scene file");
+  out.stream() << text;
+  out.commit();
 }
 
 SceneDef resolve_scene(const std::string& name_or_path) {

@@ -8,10 +8,13 @@ scheduler, an output that cannot be written).
 import argparse
 import importlib
 import json
+import os
 import sys
+import tempfile
 
 EXIT_BAD_INPUT = 2
 EXIT_RUNTIME_FAILURE = 4
+EXIT_OUTPUT_FAILURE = 5
 
 
 class UsageError(Exception):
@@ -126,14 +129,36 @@ def sweep_command(arguments, prog):
         if options.out == "-":
             table.to_csv(sys.stdout, index=False)
         else:
-            table.to_csv(options.out, index=False)
+            _write_complete(options.out, lambda file: table.to_csv(file, index=False))
     except OSError as error:
         print(f"{prog}: cannot write {options.out}: {error}", file=sys.stderr)
-        return EXIT_RUNTIME_FAILURE
+        return EXIT_OUTPUT_FAILURE
     failed = int(table["error"].notna().sum())
     where = "" if options.out == "-" else f" into {options.out}"
     print(f"{prog}: {len(table)} variants{where}, {failed} failed", file=sys.stderr)
     return 0
+
+
+def _write_complete(path, write):
+    """Writes through `write(file)` to a temporary file beside `path`, synced and renamed over
+    it only when complete (as the C++ commands do): an interrupted run leaves the earlier file.
+    A path that exists and is not a regular file (/dev/stdout) is written in place."""
+    if os.path.exists(path) and not os.path.isfile(path) and not os.path.isdir(path):
+        with open(path, "w", newline="") as file:
+            write(file)
+        return
+    directory, name = os.path.split(os.path.abspath(path))
+    descriptor, temporary = tempfile.mkstemp(prefix=f".{name}.", suffix=".partial.csv",
+                                             dir=directory)
+    try:
+        with os.fdopen(descriptor, "w", newline="") as file:
+            write(file)
+            file.flush()
+            os.fsync(file.fileno())
+        os.replace(temporary, path)
+    except BaseException:
+        os.unlink(temporary)
+        raise
 
 
 def main(arguments=None, prog="python3 -m minkowski"):

@@ -38,8 +38,8 @@ class PngSequenceSink final : public FrameSink {
     std::error_code error;
     std::filesystem::create_directories(directory_, error);
     if (error || !std::filesystem::is_directory(directory_)) {
-      throw OutputError("cannot make the frame directory " + directory_.string() +
-                        (error ? ": " + error.message() : ""));
+      throw FileWriteError("cannot make the frame directory " + directory_.string() +
+                           (error ? ": " + error.message() : ""));
     }
   }
   void write(const Image& frame) override {

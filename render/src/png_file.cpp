@@ -6,6 +6,7 @@
 #include <string>
 
 #include "mink/error.hpp"
+#include "mink/output_file.hpp"
 #include "mink/render/render_error.hpp"
 
 namespace mink {
@@ -28,11 +29,14 @@ void write_png(const std::filesystem::path& path, const Image& image) {
   png.width = static_cast<png_uint_32>(image.width);
   png.height = static_cast<png_uint_32>(image.height);
   png.format = image.channels == 4 ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
-  if (!png_image_write_to_file(&png, path.c_str(), 0, image.pixels.data(), 0, nullptr)) {
+  OutputFile out(path, "PNG file");
+  if (!png_image_write_to_file(&png, out.writing_path().c_str(), 0, image.pixels.data(), 0,
+                               nullptr)) {
     const std::string reason = png.message;
     png_image_free(&png);
-    throw OutputError("cannot write " + path.string() + ": " + reason);
+    throw FileWriteError("cannot write " + path.string() + ": " + reason);
   }
+  out.commit();
 }
 
 Image read_png(const std::filesystem::path& path) {

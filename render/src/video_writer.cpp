@@ -155,7 +155,16 @@ VideoWriter::VideoWriter(std::filesystem::path path, int width, int height, Vide
   } else if (codec_ == "mpeg4") {
     arguments.insert(arguments.end(), {"-q:v", "3"});
   }
-  arguments.insert(arguments.end(), {"-pix_fmt", "yuv420p", path_.string()});
+  try {
+    output_ = std::make_unique<OutputFile>(path_, "video");
+  } catch (...) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    ::close(log_fd);
+    std::filesystem::remove(log_path_);
+    throw;
+  }
+  arguments.insert(arguments.end(), {"-pix_fmt", "yuv420p", output_->writing_path().string()});
   try {
     pid_ = spawn(arguments, fds[0], -1, log_fd);
   } catch (...) {
@@ -260,9 +269,11 @@ void VideoWriter::close() {
   if (pid_ < 0) return;
   const Ending ending = end_ffmpeg();
   if (!ending.succeeded) {
+    output_->discard();
     throw OutputError("ffmpeg failed to write " + path_.string() + " (" + ending.how +
                       "): " + ending.tail);
   }
+  output_->commit();
 }
 
 }  // namespace mink

@@ -38,6 +38,15 @@ class OutputError : public Error {
   using Error::Error;
 };
 
+/// A file or directory could not be created or written (no permission, a full disk, a path
+/// through a regular file). The message names the path and the system's reason. Files are
+/// written under a temporary name and renamed when complete (OutputFile), so a file that was
+/// there before is left as it was.
+class FileWriteError : public OutputError {
+ public:
+  using OutputError::OutputError;
+};
+
 /// Input with no area: fewer than three distinct, non-collinear points.
 class DegenerateInputError : public Error {
  public:

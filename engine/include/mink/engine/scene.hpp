@@ -67,6 +67,12 @@ SceneDef capture_scene(const World& world);
 /// @throws InvalidArgumentError for an index past the scene's bodies.
 Pose scene_body_pose(const SceneDef& scene, std::size_t index);
 
+/// @brief Moves the whole scene by `offset`, as if it had been built there: every body's
+/// position and the world points of pulley joints (shapes and other joints are body-local).
+/// A schedule, being code, is not moved: a scene with one is refused.
+/// @throws InvalidArgumentError for a non-finite offset or a scene with a schedule.
+void shift_scene(SceneDef& scene, const Vec2& offset);
+
 /// @brief Built-in scenes: ours (pyramid, pyramid_100, pyramid_grid, rain_mixed, tumbler_400,
 /// paper, shapes, pendulum, chain, bridge, ragdolls, car, newtons_cradle), then Box2D v3's
 /// benchmark suite (see benchmark_suite).

@@ -38,8 +38,9 @@ SceneDef load_scene_file(const std::filesystem::path& path);
 /// round-trip form: parse_scene_json(scene_to_json(s)) gives back exactly `s` (but for the
 /// bounds of a joint limit that is off, which are not written). Joints are written body-local.
 std::string scene_to_json(const SceneDef& scene);
-/// @brief Writes scene_to_json(scene), creating the parent directories.
-/// @throws OutputError (the environment failed) when the directory or file cannot be written
+/// @brief Writes scene_to_json(scene), creating the parent directories, through an OutputFile:
+/// a file already at `path` is replaced only by the complete new one.
+/// @throws FileWriteError (the environment failed) when the directory or file cannot be written
 void save_scene_file(const std::filesystem::path& path, const SceneDef& scene);
 
 /// @brief Changes one world setting, as `mink run --world KEY=VALUE` does: `key` as in the

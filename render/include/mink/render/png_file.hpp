@@ -7,7 +7,8 @@
 namespace mink {
 
 /// @brief Writes an 8-bit RGB or RGBA PNG.
-/// @throws OutputError naming the file when it cannot be written
+/// @throws FileWriteError naming the file when it cannot be written; written under a
+/// temporary name and renamed when complete (OutputFile), so an earlier file survives a failure
 /// @throws InvalidArgumentError for an empty or inconsistent image
 void write_png(const std::filesystem::path& path, const Image& image);
 /// @brief Reads any PNG libpng reads, converted to 8-bit RGBA.

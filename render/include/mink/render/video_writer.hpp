@@ -3,8 +3,10 @@
 #include <sys/types.h>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <string>
 
+#include "mink/output_file.hpp"
 #include "mink/render/image.hpp"
 
 namespace mink {
@@ -19,7 +21,9 @@ struct VideoOptions {
 
 /// An MP4 (or any container ffmpeg picks from the file name) made by piping raw RGB24 frames
 /// into an ffmpeg process. Errors from ffmpeg, a missing ffmpeg included, surface as
-/// OutputError with the end of ffmpeg's own log.
+/// OutputError with the end of ffmpeg's own log. ffmpeg writes a temporary file that close()
+/// renames to the path once ffmpeg has finished it (OutputFile): a run stopped part-way leaves
+/// an earlier file of that name as it was.
 class VideoWriter {
  public:
   /// @brief Starts ffmpeg writing `path`.
@@ -55,6 +59,7 @@ class VideoWriter {
   Ending end_ffmpeg();
 
   std::filesystem::path path_;
+  std::unique_ptr<OutputFile> output_;  // what ffmpeg writes until close() renames it
   std::filesystem::path log_path_;
   int width_;
   int height_;
