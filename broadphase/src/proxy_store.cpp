@@ -138,3 +138,44 @@ void ProxyStore::release_destroyed() {
 }
 
 }  // namespace mink
+
+namespace mink {
+
+template <typename Archive>
+void ProxyStore::fields(Archive& archive) {
+  archive(fattening_.margin);
+  archive(fattening_.size_fraction);
+  archive(fattening_.prediction_steps);
+  archive(fat_);
+  archive(last_lower_);
+  archive(kind_);
+  archive(user_data_);
+  archive(alive_);
+  archive(free_ids_);
+  archive(destroyed_ids_);
+  std::uint64_t count = count_;
+  archive(count);
+  count_ = static_cast<std::size_t>(count);
+  if constexpr (Archive::loading) {
+    const std::size_t n = alive_.size();
+    if (fat_.size() != n || last_lower_.size() != n || kind_.size() != n ||
+        user_data_.size() != n) {
+      archive.in.fail("broadphase proxy arrays of different lengths");
+    }
+    for (const ProxyId id : free_ids_) {
+      if (id >= n) archive.in.fail("a free proxy id beyond the proxies");
+    }
+    for (const ProxyId id : destroyed_ids_) {
+      if (id >= n) archive.in.fail("a destroyed proxy id beyond the proxies");
+    }
+  }
+}
+
+void ProxyStore::save(SaveArchive& archive) const {
+  const_cast<ProxyStore*>(this)->fields(archive);
+}
+void ProxyStore::load(LoadArchive& archive) {
+  fields(archive);
+}
+
+}  // namespace mink

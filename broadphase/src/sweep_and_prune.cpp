@@ -579,3 +579,106 @@ void SweepAndPrune::query_point(const Vec2& point, std::vector<ProxyId>& out) co
 }
 
 }  // namespace mink
+
+namespace mink {
+
+template <typename Archive>
+void SweepAndPrune::fields(Archive& archive) {
+  const auto entries = [&](std::vector<Entry>& list) {
+    if constexpr (Archive::loading) {
+      list.resize(archive.count(sizeof(Entry) / 2));
+    } else {
+      archive.count(list.size());
+    }
+    for (Entry& e : list) {
+      archive(e.key);
+      archive(e.lo0);
+      archive(e.hi0);
+      archive(e.lo1);
+      archive(e.hi1);
+      archive(e.id);
+      archive(e.is_static);
+    }
+  };
+  if constexpr (Archive::loading) {
+    store_.load(archive);
+    pairs_.resize(archive.count(2 * sizeof(ProxyId)));
+  } else {
+    store_.save(archive);
+    archive.count(pairs_.size());
+  }
+  for (ProxyPair& pair : pairs_) {
+    archive(pair.a);
+    archive(pair.b);
+  }
+  entries(entries_);
+  archive(band_begin_);
+  entries(oversized_);
+  archive(slot_);
+  archive(committed_);
+  archive(touched_);
+  archive(touched_ids_);
+  if constexpr (Archive::loading) {
+    cursors_.resize(archive.count(sizeof(Cursor) / 2));
+  } else {
+    archive.count(cursors_.size());
+  }
+  for (Cursor& cursor : cursors_) {
+    archive(cursor.stamp);
+    archive(cursor.key);
+    archive(cursor.index);
+  }
+  archive(cursor_stamp_);
+  std::uint64_t dead = dead_count_, clamped = clamped_count_, rebuilds = rebuild_count_;
+  archive(dead);
+  archive(built_);
+  archive(sweep_axis_);
+  archive(band_origin_);
+  archive(band_scale_);
+  archive(band_count_);
+  archive(cap0_);
+  archive(cap1_);
+  archive(max_extent0_);
+  archive(max_extent1_);
+  archive(clamped);
+  archive(rebuilds);
+  dead_count_ = static_cast<std::size_t>(dead);
+  clamped_count_ = static_cast<std::size_t>(clamped);
+  rebuild_count_ = static_cast<std::size_t>(rebuilds);
+  if constexpr (Archive::loading) {
+    // What the queries index with must stay in range; the checksum guards the rest.
+    const std::size_t ids = store_.id_bound();
+    if (slot_.size() > ids || committed_.size() > ids || touched_.size() > ids) {
+      archive.in.fail("broadphase per-proxy arrays longer than the proxies");
+    }
+    for (const ProxyPair& pair : pairs_) {
+      if (pair.a >= ids || pair.b >= ids) archive.in.fail("a broadphase pair of unknown proxies");
+    }
+    for (const std::vector<Entry>* list : {&entries_, &oversized_}) {
+      for (const Entry& e : *list) {
+        if (e.id >= ids) archive.in.fail("a broadphase entry of an unknown proxy");
+      }
+    }
+    for (const std::uint32_t s : slot_) {
+      const std::size_t bound = (s & kOversizedBit) != 0 ? oversized_.size() : entries_.size();
+      if (s != kNoSlot && (s & ~kOversizedBit) >= bound) {
+        archive.in.fail("a broadphase slot beyond its array");
+      }
+    }
+    for (const std::uint32_t b : band_begin_) {
+      if (b > entries_.size()) archive.in.fail("a broadphase band beyond the entries");
+    }
+    for (const ProxyId id : touched_ids_) {
+      if (id >= ids) archive.in.fail("a touched proxy that does not exist");
+    }
+  }
+}
+
+void SweepAndPrune::save(SaveArchive& archive) const {
+  const_cast<SweepAndPrune*>(this)->fields(archive);
+}
+void SweepAndPrune::load(LoadArchive& archive) {
+  fields(archive);
+}
+
+}  // namespace mink

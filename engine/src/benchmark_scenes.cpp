@@ -6,13 +6,16 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <numbers>
+#include <span>
 #include <utility>
 #include <vector>
 
 #include "benchmark_scenes.hpp"
 #include "human.hpp"
 #include "scene_building.hpp"
+#include "snapshot_io.hpp"
 
 namespace mink {
 
@@ -150,12 +153,17 @@ SceneDef junkyard() {
   const std::size_t pusher =
       add_body(scene, BodyType::kinematic, Vec2(0, 0), {ShapeDef::box(2, 4, Vec2(0, 4))});
   // Each step the pusher is steered to where its path is at the end of the step.
+  // Each step the pusher is steered to where its path is at the end of the step: the actions
+  // keep nothing but the scene's id.
   scene.schedule = [pusher](World&, const SceneIds& ids) -> SceneActions {
-    return [id = ids.bodies[pusher]](World& world, std::uint64_t step) {
-      const Real dt = world.def().time_step;
-      const Real t = dt * static_cast<Real>(step);
-      world.set_target_transform(id, Vec2(60 * std::sin(0.2 * t), 0), 0, dt);
-    };
+    return {.act =
+                [id = ids.bodies[pusher]](World& world, std::uint64_t step) {
+                  const Real dt = world.def().time_step;
+                  const Real t = dt * static_cast<Real>(step);
+                  world.set_target_transform(id, Vec2(60 * std::sin(0.2 * t), 0), 0, dt);
+                },
+            .save = nullptr,
+            .load = nullptr};
   };
   return scene;
 }
@@ -209,7 +217,44 @@ class RainActions {
     oldest_ = (oldest_ + 1) % kRainColumns;
   }
 
+  // The groups' ids and the counters, for SceneRun snapshots.
+  std::vector<std::uint8_t> save() const {
+    ByteWriter out;
+    SaveArchive archive{out};
+    fields(archive, const_cast<RainActions&>(*this));
+    return std::move(out.bytes());
+  }
+  void load(std::span<const std::uint8_t> bytes, const World& world) {
+    ByteReader in(bytes);
+    LoadArchive archive{in, world.serial()};
+    RainActions loaded;
+    fields(archive, loaded);
+    if (in.remaining() != 0) in.fail("rain schedule state ends early");
+    if (loaded.groups_.size() != groups_.size() || loaded.columns_ < 0 ||
+        loaded.columns_ > kRainColumns || loaded.oldest_ < 0 || loaded.oldest_ >= kRainColumns) {
+      in.fail("rain schedule state out of range");
+    }
+    *this = std::move(loaded);
+  }
+
  private:
+  template <typename Archive>
+  static void fields(Archive& archive, RainActions& rain) {
+    if constexpr (Archive::loading) {
+      rain.groups_.resize(archive.count(1));
+    } else {
+      archive.count(rain.groups_.size());
+    }
+    for (Group& group : rain.groups_) {
+      for (SceneIds& human : group) {
+        archive(human.bodies);
+        archive(human.joints);
+      }
+    }
+    archive(rain.columns_);
+    archive(rain.oldest_);
+  }
+
   using Group = std::array<SceneIds, kRainGroup>;
 
   Group& group(int shelf, int column) {
@@ -255,7 +300,13 @@ SceneDef rain() {
     }
   }
   add_ground(scene, std::move(shelves));
-  scene.schedule = [](World&, const SceneIds&) -> SceneActions { return RainActions{}; };
+  scene.schedule = [](World&, const SceneIds&) -> SceneActions {
+    auto rain = std::make_shared<RainActions>();
+    return {.act = [rain](World& world, std::uint64_t step) { (*rain)(world, step); },
+            .save = [rain] { return rain->save(); },
+            .load = [rain](std::span<const std::uint8_t> bytes,
+                           const World& world) { rain->load(bytes, world); }};
+  };
   return scene;
 }
 

@@ -10,6 +10,7 @@
 
 #include "checks.hpp"
 #include "mink/error.hpp"
+#include "record_scope.hpp"
 #include "world_state.hpp"
 
 namespace mink {
@@ -127,6 +128,7 @@ void WorldState::update_mass(Body& b) {
 }
 
 BodyId World::create_body(const BodyDef& def) {
+  const detail::RecordScope record(*this, detail::Call::create_body, def);
   check_body_def(def);
   WorldState& w = *state_;
   const std::uint32_t index = w.bodies.allocate();
@@ -158,6 +160,7 @@ BodyId World::create_body(const BodyDef& def) {
 }
 
 void World::destroy_body(BodyId id) {
+  const detail::RecordScope record(*this, detail::Call::destroy_body, id);
   Body& b = state_->body(id);
   while (!b.joints.empty()) state_->destroy_joint(b.joints.back());
   while (!b.shapes.empty()) destroy_shape(state_->shape_id(b.shapes.back()));
@@ -280,6 +283,7 @@ std::vector<ContactData> World::body_contacts(BodyId id) const {
 }
 
 void World::set_transform(BodyId id, const Vec2& position, Real angle) {
+  const detail::RecordScope record(*this, detail::Call::set_transform, id, position, angle);
   require(finite(position) && std::isfinite(angle),
           "set_transform of " + to_string(id) + ": position and angle must be finite");
   WorldState& w = *state_;
@@ -298,6 +302,7 @@ void World::set_transform(BodyId id, const Vec2& position, Real angle) {
 }
 
 void World::set_linear_velocity(BodyId id, const Vec2& velocity) {
+  const detail::RecordScope record(*this, detail::Call::set_linear_velocity, id, velocity);
   require(finite(velocity), "set_linear_velocity of " + to_string(id) + ": must be finite");
   Body& b = state_->body(id);
   if (b.type == BodyType::static_body) return;
@@ -306,6 +311,7 @@ void World::set_linear_velocity(BodyId id, const Vec2& velocity) {
 }
 
 void World::set_angular_velocity(BodyId id, Real velocity) {
+  const detail::RecordScope record(*this, detail::Call::set_angular_velocity, id, velocity);
   require(std::isfinite(velocity), "set_angular_velocity of " + to_string(id) + ": must be finite");
   Body& b = state_->body(id);
   if (b.type == BodyType::static_body || b.fixed_rotation) return;
@@ -314,6 +320,7 @@ void World::set_angular_velocity(BodyId id, Real velocity) {
 }
 
 void World::apply_force(BodyId id, const Vec2& force, const Vec2& world_point) {
+  const detail::RecordScope record(*this, detail::Call::apply_force, id, force, world_point);
   require(finite(force) && finite(world_point),
           "apply_force to " + to_string(id) + ": force and point must be finite");
   Body& b = state_->body(id);
@@ -325,6 +332,7 @@ void World::apply_force(BodyId id, const Vec2& force, const Vec2& world_point) {
 }
 
 void World::apply_torque(BodyId id, Real torque) {
+  const detail::RecordScope record(*this, detail::Call::apply_torque, id, torque);
   require(std::isfinite(torque), "apply_torque to " + to_string(id) + ": must be finite");
   Body& b = state_->body(id);
   if (b.type != BodyType::dynamic) return;
@@ -333,6 +341,8 @@ void World::apply_torque(BodyId id, Real torque) {
 }
 
 void World::apply_linear_impulse(BodyId id, const Vec2& impulse, const Vec2& world_point) {
+  const detail::RecordScope record(*this, detail::Call::apply_linear_impulse, id, impulse,
+                                   world_point);
   require(finite(impulse) && finite(world_point),
           "apply_linear_impulse to " + to_string(id) + ": impulse and point must be finite");
   Body& b = state_->body(id);
@@ -344,6 +354,7 @@ void World::apply_linear_impulse(BodyId id, const Vec2& impulse, const Vec2& wor
 }
 
 void World::set_awake(BodyId id, bool awake) {
+  const detail::RecordScope record(*this, detail::Call::set_awake, id, awake);
   Body& b = state_->body(id);
   if (b.type == BodyType::static_body) return;
   if (awake) {
@@ -357,6 +368,7 @@ void World::set_awake(BodyId id, bool awake) {
 }
 
 void World::set_body_type(BodyId id, BodyType type) {
+  const detail::RecordScope record(*this, detail::Call::set_body_type, id, type);
   WorldState& w = *state_;
   Body& b = w.body(id);
   if (b.type == type) return;
@@ -381,6 +393,7 @@ void World::set_body_type(BodyId id, BodyType type) {
 }
 
 void World::set_enabled(BodyId id, bool enabled) {
+  const detail::RecordScope record(*this, detail::Call::set_enabled, id, enabled);
   WorldState& w = *state_;
   Body& b = w.body(id);
   if (b.enabled == enabled) return;
@@ -400,6 +413,7 @@ void World::set_enabled(BodyId id, bool enabled) {
 }
 
 void World::set_fixed_rotation(BodyId id, bool fixed) {
+  const detail::RecordScope record(*this, detail::Call::set_fixed_rotation, id, fixed);
   WorldState& w = *state_;
   Body& b = w.body(id);
   if (b.fixed_rotation == fixed) return;
@@ -410,16 +424,20 @@ void World::set_fixed_rotation(BodyId id, bool fixed) {
 }
 
 void World::set_bullet(BodyId id, bool bullet) {
+  const detail::RecordScope record(*this, detail::Call::set_bullet, id, bullet);
   state_->body(id).bullet = bullet;
 }
 
 void World::set_continuous_threshold(BodyId id, Real threshold) {
+  const detail::RecordScope record(*this, detail::Call::set_continuous_threshold, id, threshold);
   require(!std::isnan(threshold) && threshold >= 0,
           "continuous_threshold must be non-negative, got " + std::to_string(threshold));
   state_->body(id).continuous_threshold = threshold;
 }
 
 void World::set_target_transform(BodyId id, const Vec2& position, Real angle, Real time_step) {
+  const detail::RecordScope record(*this, detail::Call::set_target_transform, id, position, angle,
+                                   time_step);
   require(finite(position) && std::isfinite(angle),
           "set_target_transform of " + to_string(id) + ": position and angle must be finite");
   require(std::isfinite(time_step) && time_step > 0,
@@ -445,6 +463,7 @@ void World::set_target_transform(BodyId id, const Vec2& position, Real angle, Re
 }
 
 void World::set_mass_data(BodyId id, const MassData& mass) {
+  const detail::RecordScope record(*this, detail::Call::set_mass_data, id, mass);
   require(std::isfinite(mass.mass) && mass.mass >= 0 && std::isfinite(mass.rotational_inertia) &&
               mass.rotational_inertia >= 0 && finite(mass.center),
           "set_mass_data of " + to_string(id) +

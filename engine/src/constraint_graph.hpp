@@ -22,6 +22,8 @@ class ConstraintGraph {
   std::uint8_t add(std::uint32_t body_a, bool a_fixed, std::uint32_t body_b, bool b_fixed);
   void remove(std::uint8_t color, std::uint32_t body_a, bool a_fixed, std::uint32_t body_b,
               bool b_fixed);
+  // Per colour, one bit per body: for snapshots.
+  std::array<std::vector<std::uint64_t>, kGraphColors>& bits() noexcept { return bits_; }
 
  private:
   std::array<std::vector<std::uint64_t>, kGraphColors> bits_;

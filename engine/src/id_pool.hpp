@@ -72,6 +72,26 @@ class IdPool {
   auto begin() const noexcept { return slots_.begin(); }
   auto end() const noexcept { return slots_.end(); }
   std::size_t live() const noexcept { return live_; }
+  // The slots, free list (its order decides the next slot handed out) and live count, for
+  // snapshots; loading checks that they agree.
+  template <typename Archive>
+  void fields(Archive& archive) {
+    archive(slots_);
+    archive(free_);
+    std::uint64_t live = live_;
+    archive(live);
+    live_ = static_cast<std::size_t>(live);
+    if constexpr (Archive::loading) {
+      std::size_t alive = 0;
+      for (const Slot& slot : slots_) alive += slot.alive ? 1 : 0;
+      if (alive != live_) archive.in.fail("a live count that does not match the slots");
+      for (const std::uint32_t index : free_) {
+        if (index >= slots_.size() || slots_[index].alive) {
+          archive.in.fail("a free slot that is beyond the slots or alive");
+        }
+      }
+    }
+  }
   // Ids of the live slots, in slot order.
   template <typename Id>
   std::vector<Id> live_ids(std::uint32_t world) const {

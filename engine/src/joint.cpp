@@ -9,6 +9,7 @@
 
 #include "checks.hpp"
 #include "mink/engine/world.hpp"
+#include "record_scope.hpp"
 #include "world_state.hpp"
 
 namespace mink {
@@ -159,6 +160,7 @@ detail::JointKind make_kind(const JointDef& def) {
 }  // namespace
 
 JointId World::create_joint(const JointDef& def) {
+  const detail::RecordScope record(*this, detail::Call::create_joint, def);
   WorldState& w = *state_;
   const DefCheck check(std::string(to_string(mink::joint_type(def))) + " joint");
   std::visit([&](const auto& d) { check_def(check, d); }, def);
@@ -309,6 +311,7 @@ void WorldState::wake_joint_bodies(std::uint32_t index) {
 }
 
 void World::destroy_joint(JointId id) {
+  const detail::RecordScope record(*this, detail::Call::destroy_joint, id);
   state_->joint(id);
   state_->destroy_joint(id.index);
 }
@@ -447,6 +450,7 @@ JointMotor World::joint_motor(JointId id) const {
   return motor_of(const_cast<Joint&>(state_->joint(id)), id, "joint_motor");
 }
 void World::set_joint_motor(JointId id, const JointMotor& motor) {
+  const detail::RecordScope record(*this, detail::Call::set_joint_motor, id, motor);
   Joint& j = state_->joint(id);
   JointMotor& m = motor_of(j, id, "set_joint_motor");
   DefCheck("set_joint_motor of " + to_string(id)).motor(motor);
@@ -458,6 +462,7 @@ JointSpring World::joint_spring(JointId id) const {
   return spring_of(const_cast<Joint&>(state_->joint(id)), id, "joint_spring");
 }
 void World::set_joint_spring(JointId id, const JointSpring& spring) {
+  const detail::RecordScope record(*this, detail::Call::set_joint_spring, id, spring);
   Joint& j = state_->joint(id);
   JointSpring& s = spring_of(j, id, "set_joint_spring");
   DefCheck("set_joint_spring of " + to_string(id)).spring(spring);
@@ -469,6 +474,7 @@ JointLimit World::joint_limit(JointId id) const {
   return limit_of(const_cast<Joint&>(state_->joint(id)), id, "joint_limit");
 }
 void World::set_joint_limit(JointId id, const JointLimit& limit) {
+  const detail::RecordScope record(*this, detail::Call::set_joint_limit, id, limit);
   Joint& j = state_->joint(id);
   JointLimit& l = limit_of(j, id, "set_joint_limit");
   const DefCheck check("set_joint_limit of " + to_string(id));
@@ -479,6 +485,7 @@ void World::set_joint_limit(JointId id, const JointLimit& limit) {
 }
 
 void World::set_distance_length(JointId id, Real length) {
+  const detail::RecordScope record(*this, detail::Call::set_distance_length, id, length);
   Joint& j = state_->joint(id);
   auto& k = kind_of<detail::DistanceJoint>(j, id, "set_distance_length", JointType::distance);
   DefCheck("set_distance_length of " + to_string(id)).positive(length, "length");
@@ -487,6 +494,8 @@ void World::set_distance_length(JointId id, Real length) {
 }
 
 void World::set_motor_target(JointId id, const Vec2& linear_offset, Real angular_offset) {
+  const detail::RecordScope record(*this, detail::Call::set_motor_target, id, linear_offset,
+                                   angular_offset);
   Joint& j = state_->joint(id);
   auto& k = kind_of<detail::MotorJoint>(j, id, "set_motor_target", JointType::motor);
   const DefCheck check("set_motor_target of " + to_string(id));
@@ -498,6 +507,8 @@ void World::set_motor_target(JointId id, const Vec2& linear_offset, Real angular
 }
 
 void World::set_motor_limits(JointId id, Real max_force, Real max_torque) {
+  const detail::RecordScope record(*this, detail::Call::set_motor_limits, id, max_force,
+                                   max_torque);
   Joint& j = state_->joint(id);
   auto& k = kind_of<detail::MotorJoint>(j, id, "set_motor_limits", JointType::motor);
   const DefCheck check("set_motor_limits of " + to_string(id));
@@ -510,6 +521,8 @@ void World::set_motor_limits(JointId id, Real max_force, Real max_torque) {
 
 void World::set_weld_springs(JointId id, Real linear_hertz, Real linear_damping_ratio,
                              Real angular_hertz, Real angular_damping_ratio) {
+  const detail::RecordScope record(*this, detail::Call::set_weld_springs, id, linear_hertz,
+                                   linear_damping_ratio, angular_hertz, angular_damping_ratio);
   Joint& j = state_->joint(id);
   auto& k = kind_of<detail::WeldJoint>(j, id, "set_weld_springs", JointType::weld);
   WeldJointDef d = k.def;
@@ -523,6 +536,7 @@ void World::set_weld_springs(JointId id, Real linear_hertz, Real linear_damping_
 }
 
 void World::set_joint_break(JointId id, Real force, Real torque) {
+  const detail::RecordScope record(*this, detail::Call::set_joint_break, id, force, torque);
   Joint& j = state_->joint(id);
   JointBase b = base(j);
   b.break_force = force;

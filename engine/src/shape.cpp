@@ -9,6 +9,7 @@
 #include <string>
 
 #include "mink/error.hpp"
+#include "record_scope.hpp"
 #include "world_state.hpp"
 
 namespace mink {
@@ -175,6 +176,7 @@ void finish_attach(WorldState& w, std::uint32_t body_index, std::span<const std:
 }  // namespace
 
 ShapeId World::create_shape(BodyId body_id, const ShapeDef& def) {
+  const detail::RecordScope record(*this, detail::Call::create_shape, body_id, def);
   WorldState& w = *state_;
   w.body(body_id);  // validates before any work
   if (def.type == ShapeType::chain) {
@@ -187,6 +189,7 @@ ShapeId World::create_shape(BodyId body_id, const ShapeDef& def) {
 }
 
 std::vector<ShapeId> World::create_chain(BodyId body_id, const ShapeDef& def) {
+  const detail::RecordScope record(*this, detail::Call::create_chain, body_id, def);
   WorldState& w = *state_;
   w.body(body_id);
   if (def.type != ShapeType::chain) {
@@ -222,6 +225,7 @@ std::vector<ShapeId> World::create_chain(BodyId body_id, const ShapeDef& def) {
 }
 
 void World::destroy_shape(ShapeId id) {
+  const detail::RecordScope record(*this, detail::Call::destroy_shape, id);
   WorldState& w = *state_;
   Shape& s = w.shape(id);
   w.destroy_shape_contacts(id.index);
@@ -322,6 +326,7 @@ void check_material_value(ShapeId id, Real value, const char* what) {
 }  // namespace
 
 void World::set_shape_density(ShapeId id, Real density) {
+  const detail::RecordScope record(*this, detail::Call::set_shape_density, id, density);
   check_material_value(id, density, "set_shape_density");
   WorldState& w = *state_;
   Shape& s = w.shape(id);
@@ -349,18 +354,21 @@ void remix_contacts(WorldState& w, std::uint32_t shape_index) {
 }  // namespace
 
 void World::set_shape_friction(ShapeId id, Real friction) {
+  const detail::RecordScope record(*this, detail::Call::set_shape_friction, id, friction);
   check_material_value(id, friction, "set_shape_friction");
   state_->shape(id).friction = friction;
   remix_contacts(*state_, id.index);
 }
 
 void World::set_shape_restitution(ShapeId id, Real restitution) {
+  const detail::RecordScope record(*this, detail::Call::set_shape_restitution, id, restitution);
   check_material_value(id, restitution, "set_shape_restitution");
   state_->shape(id).restitution = restitution;
   remix_contacts(*state_, id.index);
 }
 
 void World::set_shape_filter(ShapeId id, const Filter& filter) {
+  const detail::RecordScope record(*this, detail::Call::set_shape_filter, id, filter);
   WorldState& w = *state_;
   Shape& s = w.shape(id);
   if (s.filter == filter) return;

@@ -10,6 +10,7 @@
 #include "mink/engine/stale_id_error.hpp"
 #include "mink/error.hpp"
 #include "mink/geometry/polygon.hpp"
+#include "record_scope.hpp"
 #include "world_state.hpp"
 
 namespace mink {
@@ -25,7 +26,7 @@ std::string to_string(ShapeId id) {
   return detail::id_string("ShapeId", id);
 }
 
-namespace {
+namespace detail {
 
 void check_world_def(const WorldDef& def) {
   require(finite(def.gravity), "WorldDef.gravity must be finite");
@@ -66,10 +67,10 @@ void check_world_def(const WorldDef& def) {
           "WorldDef.task_system needs both enqueue and finish, or neither");
 }
 
-}  // namespace
+}  // namespace detail
 
 World::World(const WorldDef& def) : state_(std::make_unique<WorldState>()) {
-  check_world_def(def);
+  detail::check_world_def(def);
   state_->def = def;
   state_->tasks.configure(def.worker_count, def.task_system);
   // Serial numbers start at 1 so that a default id (world 0) never names a live object.
@@ -86,6 +87,7 @@ const WorldDef& World::def() const noexcept {
 }
 
 void World::set_gravity(const Vec2& gravity) {
+  const detail::RecordScope record(*this, detail::Call::set_gravity, gravity);
   require(finite(gravity), "gravity must be finite");
   state_->def.gravity = gravity;
   for (detail::Body& b : state_->bodies) {
@@ -94,6 +96,7 @@ void World::set_gravity(const Vec2& gravity) {
 }
 
 void World::enable_sleep(bool enabled) {
+  const detail::RecordScope record(*this, detail::Call::enable_sleep, enabled);
   state_->def.enable_sleep = enabled;
   if (!enabled) {
     for (detail::Body& b : state_->bodies) {
@@ -103,10 +106,12 @@ void World::enable_sleep(bool enabled) {
 }
 
 void World::step() {
+  const detail::RecordScope record(*this, detail::Call::step);
   run_step(true, state_->def.time_step, state_->def.substeps);
 }
 
 void World::step(Real time_step, int substeps) {
+  const detail::RecordScope record(*this, detail::Call::step_with, time_step, substeps);
   require(std::isfinite(time_step) && time_step > 0,
           "step: time_step must be positive and finite, got " + std::to_string(time_step));
   require(substeps >= 1, "step: substeps must be at least 1, got " + std::to_string(substeps));
@@ -114,6 +119,7 @@ void World::step(Real time_step, int substeps) {
 }
 
 AdvanceResult World::advance(Real frame_seconds) {
+  const detail::RecordScope record(*this, detail::Call::advance, frame_seconds);
   require(std::isfinite(frame_seconds) && frame_seconds >= 0,
           "advance: frame_seconds must be finite and non-negative, got " +
               std::to_string(frame_seconds));
@@ -220,6 +226,7 @@ void World::run_step(bool clear_events, Real time_step, int substeps) {
   w.profile = {ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t4, t5), ms(t5, t6), ms(t6, t7)};
   w.time += time_step;
   ++w.step_count;
+  if (w.recorder != nullptr) w.recorder->stepped(*this);
 }
 
 }  // namespace mink

@@ -21,6 +21,11 @@
 
 namespace mink {
 
+namespace detail {
+// Throws InvalidArgumentError naming the first bad field (world.cpp).
+void check_world_def(const WorldDef& def);
+}  // namespace detail
+
 // Everything a World owns. Each concept's data and operations live in their own file (body,
 // shape, contact, sensor, island, the solver stages); this is where they meet.
 struct WorldState {
@@ -63,6 +68,9 @@ struct WorldState {
   std::vector<std::uint32_t> fell_asleep;  // bodies the last step put to sleep
   StepCounters counters;
   StepProfile profile;
+
+  Recorder* recorder = nullptr;  // World::set_recorder's, not state
+  int call_depth = 0;            // World calls under way: only the outermost is recorded
 
   Real time = 0;
   Real accumulator = 0;

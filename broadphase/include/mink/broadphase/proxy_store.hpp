@@ -7,6 +7,7 @@
 
 #include "mink/broadphase/aabb.hpp"
 #include "mink/broadphase/broadphase.hpp"
+#include "mink/byte_stream.hpp"
 
 namespace mink {
 
@@ -50,7 +51,14 @@ class ProxyStore {
   std::size_t id_bound() const { return alive_.size(); }
   const Fattening& fattening() const { return fattening_; }
 
+  /// Everything above, free and destroyed ids included, as snapshot bytes and back.
+  void save(SaveArchive& archive) const;
+  void load(LoadArchive& archive);
+
  private:
+  template <typename Archive>
+  void fields(Archive& archive);
+
   /// `tight` grown by its margin and stretched along `step`, the motion since the last move.
   Aabb fattened(const Aabb& tight, const Vec2& step, std::string_view operation) const;
 

@@ -5,6 +5,7 @@
 
 #include "mink/broadphase/broadphase.hpp"
 #include "mink/broadphase/proxy_store.hpp"
+#include "mink/byte_stream.hpp"
 
 namespace mink {
 
@@ -48,7 +49,15 @@ class SweepAndPrune final : public Broadphase {
   std::size_t oversized_count() const { return oversized_.size(); }
   std::size_t rebuild_count() const { return rebuild_count_; }
 
+  /// The whole state as snapshot bytes and back, the array order, the layout and the touched
+  /// proxies included: a loaded broadphase reports the same pairs in the same order as the
+  /// saved one would have.
+  void save(SaveArchive& archive) const;
+  void load(LoadArchive& archive);
+
  private:
+  template <typename Archive>
+  void fields(Archive& archive);
   /// A box in (sweep axis, band axis) coordinates, with its sort key.
   struct Entry {
     std::uint64_t key;

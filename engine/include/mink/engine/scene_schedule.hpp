@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "mink/engine/ids.hpp"
@@ -38,8 +39,20 @@ struct SceneIds {
 /// resumes without the schedule.
 /// @{
 
-/// @brief One run's actions: called before each step with the steps taken so far.
-using SceneActions = std::function<void(World& world, std::uint64_t step)>;
+/// One run's actions: `act` is called before each step with the steps taken so far. Actions
+/// that keep state of their own (the bodies they made, a counter) also give `save` and `load`,
+/// so that a SceneRun snapshot resumes them exactly.
+struct SceneActions {
+  std::function<void(World& world, std::uint64_t step)> act;
+  /// The actions' own state as bytes (none: nothing beyond the scene's ids and the step).
+  std::function<std::vector<std::uint8_t>()> save;
+  /// Reads what save wrote, ids taking `world`'s number; throws SnapshotError for bytes it
+  /// cannot read, its state then unchanged.
+  std::function<void(std::span<const std::uint8_t> bytes, const World& world)> load;
+
+  void operator()(World& world, std::uint64_t step) const { act(world, step); }
+  explicit operator bool() const noexcept { return static_cast<bool>(act); }
+};
 
 /// @brief Starts a run of a scene: the actions for a world just built from it.
 using SceneSchedule = std::function<SceneActions(World& world, const SceneIds& ids)>;
@@ -62,6 +75,14 @@ class SceneRun {
   const World& world() const noexcept { return world_; }
   /// @brief The ids of the scene's own bodies and joints (not of those its schedule makes).
   const SceneIds& ids() const noexcept { return ids_; }
+
+  /// @brief The world's snapshot (World::snapshot) and the schedule's own state.
+  std::vector<std::uint8_t> snapshot() const;
+  /// Puts the world and the schedule back to `snapshot`, taken from a run of the same scene:
+  /// the run then continues as that one would have.
+  /// @throws SnapshotError as World::restore, or for schedule state that does not read; the
+  /// run is then left as it was.
+  void restore(std::span<const std::uint8_t> snapshot);
 
  private:
   World world_;

@@ -7,12 +7,14 @@
 #include <vector>
 
 #include "mink/broadphase/aabb.hpp"
+#include "mink/byte_stream.hpp"
 #include "mink/engine/body_def.hpp"
 #include "mink/engine/contact_events.hpp"
 #include "mink/engine/debug_draw.hpp"
 #include "mink/engine/filter.hpp"
 #include "mink/engine/ids.hpp"
 #include "mink/engine/joint_def.hpp"
+#include "mink/engine/recorder.hpp"
 #include "mink/engine/shape_def.hpp"
 #include "mink/engine/world_def.hpp"
 #include "mink/narrowphase/pose.hpp"
@@ -22,6 +24,9 @@
 namespace mink {
 
 struct WorldState;
+namespace detail {
+class RecordScope;
+}  // namespace detail
 
 /// @brief A World::ray_cast hit: which shape, and where.
 struct ShapeRayHit {
@@ -394,10 +399,57 @@ class World {
 
   /// @}
 
+  /// @name Snapshots
+  /// A snapshot is the whole simulation state as bytes: bodies, shapes, joints, contacts with
+  /// their warm-start impulses and feature ids, sleep timers, constraint colours, the
+  /// broadphase's order, the id pools with their free lists and generations, the step count
+  /// and the time advance() has accumulated. A world restored from one continues bitwise as
+  /// the world it was taken from would have, at any worker count: the worker settings are
+  /// not part of it. Snapshots carry a format version, a fingerprint of the build (number
+  /// type, byte order, record layouts) and a checksum; they are for this build of the engine,
+  /// not an archive format (scene files are).
+  /// @{
+
+  /// @brief The whole state, as bytes restore() and from_snapshot() take.
+  std::vector<std::uint8_t> snapshot() const;
+  /// Rolls the world back (or forward) to `snapshot`, in place: ids issued before the
+  /// snapshot was taken name the same objects again; ids of objects made after it are stale
+  /// (until their slot is reused). Events and counters are cleared; the worker settings stay.
+  /// @throws SnapshotError naming what is wrong (another format version or build, truncated
+  /// at byte N, a checksum mismatch, a corrupt field); the world is then left as it was.
+  void restore(std::span<const std::uint8_t> snapshot);
+  /// @brief A new world in the snapshot's state, with the given workers; its ids carry its
+  /// own world number (BodyId::world) but the snapshot's slots and generations.
+  /// @throws SnapshotError as restore().
+  static World from_snapshot(std::span<const std::uint8_t> snapshot, int worker_count = 1,
+                             const TaskSystem& task_system = {});
+  /// A 64-bit hash of the state a snapshot holds, for desync checks: two worlds with equal
+  /// hashes continue the same (the same on every run of this build, at any worker count).
+  std::uint64_t state_hash() const;
+  /// @brief This world's number, which every id it issues carries (BodyId::world).
+  std::uint32_t serial() const noexcept;
+
+  /// @}
+
+  /// @name Recording
+  /// @{
+
+  /// @brief Reports every call that changes the world to `recorder` (null: none), until
+  /// changed. The recorder must outlive its use; it is not part of snapshots.
+  void set_recorder(Recorder* recorder) noexcept;
+  /// Runs a call as Recorder::call received it, with its arguments (ids as recorded, given
+  /// this world's number).
+  /// @throws SnapshotError for bytes that are not a recorded call; otherwise what the call
+  /// throws.
+  void replay_call(std::span<const std::uint8_t> encoded);
+
+  /// @}
+
   /// @brief Describes the world to `draw` in world coordinates, the layers `draw.layers` selects.
   void draw(DebugDraw& draw) const;
 
  private:
+  friend class detail::RecordScope;
   void run_step(bool clear_events, Real time_step, int substeps);
   std::unique_ptr<WorldState> state_;
 };
