@@ -45,11 +45,12 @@ void make_output_directory(const std::filesystem::path& directory, const std::st
   }
 }
 
-OutputFile::OutputFile(std::filesystem::path path, std::string what)
+OutputFile::OutputFile(std::filesystem::path path, std::string what, bool make_parents)
     : path_(std::move(path)), what_(std::move(what)) {
   if (path_.empty()) throw FileWriteError("cannot write " + what_ + ": the path is empty");
   const std::filesystem::path directory = path_.parent_path();
-  if (!directory.empty()) make_output_directory(directory, what_ + " '" + path_.string() + "'");
+  if (make_parents && !directory.empty())
+    make_output_directory(directory, what_ + " '" + path_.string() + "'");
   std::error_code error;
   const std::filesystem::file_status status = std::filesystem::status(path_, error);
   if (std::filesystem::is_directory(status)) fail("write", EISDIR);

@@ -29,7 +29,7 @@ void write_png(const std::filesystem::path& path, const Image& image) {
   png.width = static_cast<png_uint_32>(image.width);
   png.height = static_cast<png_uint_32>(image.height);
   png.format = image.channels == 4 ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
-  OutputFile out(path, "PNG file");
+  OutputFile out(path, "PNG file", false);
   if (!png_image_write_to_file(&png, out.writing_path().c_str(), 0, image.pixels.data(), 0,
                                nullptr)) {
     const std::string reason = png.message;

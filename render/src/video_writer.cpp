@@ -156,7 +156,7 @@ VideoWriter::VideoWriter(std::filesystem::path path, int width, int height, Vide
     arguments.insert(arguments.end(), {"-q:v", "3"});
   }
   try {
-    output_ = std::make_unique<OutputFile>(path_, "video");
+    output_ = std::make_unique<OutputFile>(path_, "video", false);
   } catch (...) {
     ::close(fds[0]);
     ::close(fds[1]);

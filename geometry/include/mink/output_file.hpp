@@ -15,10 +15,11 @@ namespace mink {
 /// as nothing can be renamed over it.
 class OutputFile {
  public:
-  /// @brief Creates the parent directories and the temporary file.
+  /// @brief Creates the parent directories (unless `make_parents` is false) and the temporary
+  /// file.
   /// @param what names the output in messages, e.g. "scene file", "--stats file"
   /// @throws FileWriteError naming the path and the reason when either cannot be made
-  OutputFile(std::filesystem::path path, std::string what);
+  OutputFile(std::filesystem::path path, std::string what, bool make_parents = true);
   /// Removes the temporary file when commit() was not reached (an error part-way).
   ~OutputFile();
   OutputFile(const OutputFile&) = delete;
