@@ -12,6 +12,7 @@ enum ExitCode : int {
   kBadInput = 2,        // usage errors, unreadable files, malformed lines, non-finite values
   kDegenerate = 3,      // a point set with no area: fewer than 3 distinct non-collinear points
   kRuntimeFailure = 4,  // the environment failed: GL, ffmpeg, the file system
+  kDiverged = 5,        // `mink replay`: a step's state hash differs from the recording's
 };
 
 // Maps an exception from a command to its exit code and prints "mink: <message>" to `err`.

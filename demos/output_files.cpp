@@ -1,5 +1,7 @@
 #include "output_files.hpp"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 #include <string>
@@ -43,6 +45,28 @@ void close_output_file(std::ofstream& out, const std::filesystem::path& file,
   errno = 0;
   out.close();
   if (!out) fail(what, file, errno);
+}
+
+void write_file_atomically(const std::filesystem::path& file, std::span<const std::uint8_t> bytes,
+                           std::string_view what) {
+  std::filesystem::path temporary = file;
+  temporary += ".tmp-" + std::to_string(::getpid());
+  std::ofstream out = open_output_file(temporary, what);
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
+  try {
+    close_output_file(out, temporary, what);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw;
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, file, error);
+  if (error) {
+    std::filesystem::remove(temporary, error);
+    fail(what, file, 0);
+  }
 }
 
 }  // namespace mink::cli

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <string_view>
 
 namespace mink::cli {
@@ -20,5 +22,10 @@ std::ofstream open_output_file(const std::filesystem::path& file, std::string_vi
 // Closes `out` and throws when anything written to it was lost.
 void close_output_file(std::ofstream& out, const std::filesystem::path& file,
                        std::string_view what);
+
+// Writes `bytes` to `file` whole or not at all: into a temporary name beside it, renamed over
+// `file` once complete, so an interrupted run never leaves half a file under the real name.
+void write_file_atomically(const std::filesystem::path& file, std::span<const std::uint8_t> bytes,
+                           std::string_view what);
 
 }  // namespace mink::cli
