@@ -435,7 +435,7 @@ TEST(RunCommand, UnwritableOutputsExit4NamingThePath) {
   expect_runtime_failure({"--trace", file + "/trace.csv"},
                          "cannot create the directory '" + file + "' for --trace file");
   expect_runtime_failure({"--save", file + "/end.json"},
-                         "cannot create the directory '" + file + "' for scene file");
+                         "cannot create the directory '" + file + "' for --save state file");
   // A directory where the file should be cannot be written (even by root).
   expect_runtime_failure({"--stats", dir.string()},
                          "cannot write --stats file '" + dir.string() + "': Is a directory");
