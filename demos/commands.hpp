@@ -25,6 +25,7 @@ Action add_paper_command(CLI::App& app, Streams streams);
 Action add_scenes_command(CLI::App& app, Streams streams);
 Action add_export_scene_command(CLI::App& app, Streams streams);
 Action add_run_command(CLI::App& app, Streams streams);
+Action add_replay_command(CLI::App& app, Streams streams);
 Action add_compare_command(CLI::App& app, Streams streams);
 Action add_sandbox_command(CLI::App& app, Streams streams);
 Action add_sweep_command(CLI::App& app, Streams streams);

@@ -14,6 +14,7 @@ enum ExitCode : int {
   kRuntimeFailure = 4,  // the environment failed: GL, ffmpeg, a program or module missing
   kOutputFailure = 5,   // an output file or directory could not be written: no permission, a
                         // full disk, a path through a file (earlier files of its name survive)
+  kDiverged = 6,        // `mink replay`: a step's state hash differs from the recording's
 };
 
 // Maps an exception from a command to its exit code and prints "mink: <message>" to `err`.

@@ -8,4 +8,12 @@ void make_directories(const std::filesystem::path& directory, std::string_view w
   make_output_directory(directory, std::string(what));
 }
 
+void write_file_atomically(const std::filesystem::path& file, std::span<const std::uint8_t> bytes,
+                           std::string_view what) {
+  OutputFile out(file, std::string(what));
+  out.stream().write(reinterpret_cast<const char*>(bytes.data()),
+                     static_cast<std::streamsize>(bytes.size()));
+  out.commit();
+}
+
 }  // namespace mink::cli

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string_view>
 
 #include "mink/output_file.hpp"
@@ -16,5 +18,9 @@ namespace mink::cli {
 
 // Creates `directory` and its parents unless they exist.
 void make_directories(const std::filesystem::path& directory, std::string_view what);
+
+// Writes `bytes` to `file` through an OutputFile: whole or not at all.
+void write_file_atomically(const std::filesystem::path& file, std::span<const std::uint8_t> bytes,
+                           std::string_view what);
 
 }  // namespace mink::cli

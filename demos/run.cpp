@@ -26,6 +26,7 @@ int run(int argc, const char* const* argv, Streams streams) {
   actions["scenes"] = add_scenes_command(app, streams);
   actions["export-scene"] = add_export_scene_command(app, streams);
   actions["run"] = add_run_command(app, streams);
+  actions["replay"] = add_replay_command(app, streams);
   actions["sweep"] = add_sweep_command(app, streams);
 #ifdef MINK_WITH_SANDBOX
   actions["sandbox"] = add_sandbox_command(app, streams);

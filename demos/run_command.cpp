@@ -1,5 +1,6 @@
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -25,6 +26,8 @@
 #include "mink/render/renderer.hpp"
 #include "mink/render/world_view.hpp"
 #include "output_files.hpp"
+#include "recording.hpp"
+#include "run_state.hpp"
 #include "scene_view.hpp"
 
 namespace mink::cli {
@@ -44,6 +47,8 @@ struct RunOptions {
   std::uint64_t trace_every = 1;
   std::string events;
   std::string save;
+  bool hash = false;
+  std::string record;
   std::string gl = "osmesa";
   std::string size = "1280x720";
   int threads = 1;
@@ -111,8 +116,25 @@ int run_scene(const RunOptions& options, Streams streams) {
   scene.world.worker_count = options.threads;
   SceneRun run(scene);  // the scene's schedule, if any, runs before each step
   World& world = run.world();
-  const std::vector<BodyId>& bodies = run.ids().bodies;   // body i of the scene is bodies[i]
-  const std::vector<JointId>& joints = run.ids().joints;  // likewise joint i
+  std::vector<BodyId> bodies = run.ids().bodies;   // body i of the scene is bodies[i]
+  std::vector<JointId> joints = run.ids().joints;  // likewise joint i
+  // A scene file saved by --save resumes from the state saved beside it, exactly.
+  const auto builtins = builtin_scene_names();
+  if (std::find(builtins.begin(), builtins.end(), options.scene) == builtins.end()) {
+    if (std::optional<std::vector<std::uint8_t>> state =
+            find_saved_state(options.scene, streams.err)) {
+      if (options.world_settings.empty()) {
+        world.restore(*state);
+        // The file lists the live bodies and joints in slot order.
+        bodies = world.bodies();
+        joints = world.joints();
+      } else {
+        streams.err << "notice: --world changes the settings, so "
+                    << state_file_for(options.scene).string()
+                    << " is not used; contacts start cold\n";
+      }
+    }
+  }
   const Real dt = scene.world.time_step;
   long long steps = 600;
   if (options.steps) steps = *options.steps;
@@ -177,6 +199,11 @@ int run_scene(const RunOptions& options, Streams streams) {
   };
   if (render) write_frame();
 
+  // Records from here: the state now, then every call the run makes (the schedule's
+  // included) and every step's hash.
+  std::optional<RunRecorder> recorder;
+  if (!options.record.empty()) recorder.emplace(world);
+
   Progress progress(streams.err, steps);
   double total_ms = 0;
   std::size_t contacts_sum = 0;
@@ -214,7 +241,8 @@ int run_scene(const RunOptions& options, Streams streams) {
   if (stats) stats->commit();
   if (trace) trace->close();
   if (events) events->close();
-  if (!options.save.empty()) save_scene_file(options.save, capture_scene(world));
+  if (!options.save.empty()) save_run(options.save, world);
+  if (recorder) save_recording(options.record, recorder->recording());
 
   streams.out << "scene " << options.scene << '\n';
   std::snprintf(line, sizeof line,
@@ -241,7 +269,19 @@ int run_scene(const RunOptions& options, Streams streams) {
   if (events) {
     streams.out << "events: " << options.events << " (" << events->events_written() << " events)\n";
   }
-  if (!options.save.empty()) streams.out << "saved: " << options.save << '\n';
+  if (!options.save.empty()) {
+    streams.out << "saved: " << options.save << " (state: " << state_file_for(options.save).string()
+                << ")\n";
+  }
+  if (recorder) {
+    streams.out << "recorded: " << options.record << " (" << recorder->steps() << " steps)\n";
+  }
+  if (options.hash) {
+    std::snprintf(line, sizeof line, "state hash %016llx at step %llu\n",
+                  static_cast<unsigned long long>(world.state_hash()),
+                  static_cast<unsigned long long>(world.step_count()));
+    streams.out << line;
+  }
   return kSuccess;
 }
 
@@ -272,7 +312,14 @@ Action add_run_command(CLI::App& app, Streams streams) {
                       "events as JSON Lines: step, type (contact_begin, contact_end, hit, "
                       "sensor_begin, sensor_end, joint_break), shape_a, shape_b or joint, "
                       "body_a, body_b");
-  command->add_option("--save", options->save, "write the final world as a scene file");
+  command->add_option("--save", options->save,
+                      "write the final world as a scene file FILE, and its solver state as "
+                      "FILE.state beside it: `mink run FILE` resumes exactly");
+  command->add_option("--record", options->record,
+                      "record the run (its initial state, every call that changes the world, "
+                      "each step's state hash) for `mink replay FILE`");
+  command->add_flag("--hash", options->hash,
+                    "print the final state hash (World::state_hash), equal for equal states");
   command->add_flag("--no-render")
       ->description("no GL at all, not even loaded: statistics, traces and events only")
       ->excludes(frames)
@@ -291,6 +338,49 @@ Action add_run_command(CLI::App& app, Streams streams) {
                    "repeatable, applied in order over the scene's own")
       ->allow_extra_args(false);  // one setting per --world: the scene may follow it
   return [options, streams] { return run_scene(*options, streams); };
+}
+
+namespace {
+
+struct ReplayOptions {
+  std::string file;
+  int threads = 1;
+};
+
+int replay_file(const ReplayOptions& options, Streams streams) {
+  const Recording recording = load_recording(options.file);
+  const ReplayResult result = replay(recording, options.threads);
+  if (result.diverged_at) {
+    char line[160];
+    std::snprintf(line, sizeof line,
+                  "diverged at step %llu: recorded state hash %016llx, replayed %016llx\n",
+                  static_cast<unsigned long long>(*result.diverged_at),
+                  static_cast<unsigned long long>(result.recorded_hash),
+                  static_cast<unsigned long long>(result.replayed_hash));
+    streams.out << "replayed " << result.steps << " steps from step " << result.first_step
+                << " with equal hashes, then\n"
+                << line;
+    return kDiverged;
+  }
+  streams.out << "replayed " << result.steps << " steps from step " << result.first_step
+              << ": every state hash equals the recording's\n";
+  return kSuccess;
+}
+
+}  // namespace
+
+Action add_replay_command(CLI::App& app, Streams streams) {
+  auto options = std::make_shared<ReplayOptions>();
+  CLI::App* command = app.add_subcommand(
+      "replay",
+      "Replay a recording (mink run --record, mink sandbox --record) and check the state hash "
+      "of every step; exit code 6 names the first step that diverges.");
+  command->add_option("file", options->file, "the recording")->required();
+  command
+      ->add_option("--threads", options->threads,
+                   "workers the replay runs on (default 1); any count must agree")
+      ->check(CLI::Range(1, 256));
+  return [options, streams] { return replay_file(*options, streams); };
 }
 
 }  // namespace mink::cli

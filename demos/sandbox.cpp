@@ -96,7 +96,24 @@ void Sandbox::reset() {
   joint_first_.reset();
   joint_message_.clear();
   drops_ = 0;
+  history_.clear();
   fit_camera();
+}
+
+void Sandbox::step_back() {
+  release();
+  const std::uint64_t now = run_.world().step_count();
+  while (!history_.empty() && history_.back().step >= now) history_.pop_back();
+  if (history_.empty()) {
+    joint_message_ = "nothing kept to step back to";
+    return;
+  }
+  // Kept, not dropped: stepping on from it keeps new moments after it.
+  run_.restore(history_.back().snapshot);
+  // Ids of what was made after that moment are stale now.
+  if (world_anchor_ && !run_.world().is_valid(*world_anchor_)) world_anchor_.reset();
+  if (joint_first_ && !run_.world().is_valid(*joint_first_)) joint_first_.reset();
+  joint_message_ = "stepped back to step " + std::to_string(history_.back().step);
 }
 
 void Sandbox::fit_camera() {
@@ -132,6 +149,8 @@ void Sandbox::key(std::string_view name) {
     step_once_ = true;
   } else if (k == "r") {
     reset();
+  } else if (k == "b") {
+    step_back();
   } else if (k == "n") {
     const auto names = builtin_scene_names();
     // From a scene file, the first built-in.
@@ -268,6 +287,11 @@ void Sandbox::step() {
     run_.world().set_awake(drag_->body, true);
   }
   run_.step();
+  const std::uint64_t now = run_.world().step_count();
+  if (now % kKeepEvery == 0) {
+    history_.push_back({now, run_.snapshot()});
+    if (history_.size() > kKeptCount) history_.pop_front();
+  }
 }
 
 void Sandbox::frame() {

@@ -1,9 +1,11 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "mink/engine/scene.hpp"
 #include "mink/engine/scene_schedule.hpp"
@@ -22,7 +24,9 @@ namespace mink::cli {
 // quits. The left mouse button on a dynamic body drags it with a motor joint (the grabbed
 // point follows the cursor); on empty space it drops a random hull there. In joint mode a
 // first click picks body A (empty space: the static world), a second click picks body B and
-// pins the two with a revolute joint at that second click point.
+// pins the two with a revolute joint at that second click point. b steps back in time: the
+// world (and the scene's schedule) as it was at the last kept moment, one kept every half
+// second for the last ten seconds; pressed again, further back.
 class Sandbox {
  public:
   // `scene` is a built-in's name or a scene file, as for `mink run`; throws
@@ -54,13 +58,14 @@ class Sandbox {
   static constexpr Color background{0.12f, 0.12f, 0.14f, 1};
   static constexpr std::string_view help =
       "drag: move body  click: drop hull  j: joint mode (click A, click B)  space: pause  "
-      "s: step  r: reset  n: next scene  1-9: layers  q: quit";
+      "s: step  b: step back  r: reset  n: next scene  1-9: layers  q: quit";
 
  private:
   void reset();
   void fit_camera();
   void step();
   void drop_hull(const Vec2& world_point);
+  void step_back();
   void grab(BodyId body);
   void release();
   void pick_joint_body(const Vec2& world_point);
@@ -84,6 +89,14 @@ class Sandbox {
     Real angle;       // the body's angle when grabbed, held while dragged
   };
   std::optional<Drag> drag_;
+  // Run snapshots to step back to (SceneRun::snapshot), oldest first, with their steps.
+  struct Kept {
+    std::uint64_t step;
+    std::vector<std::uint8_t> snapshot;
+  };
+  std::deque<Kept> history_;
+  static constexpr std::uint64_t kKeepEvery = 30;  // steps: half a second
+  static constexpr std::size_t kKeptCount = 20;
   bool joint_mode_ = false;
   std::optional<BodyId> joint_first_;
   std::string joint_message_;  // what joint mode's last click did, shown in the overlay

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
@@ -22,6 +23,7 @@
 #include "mink/engine/scene_file.hpp"
 #include "mink/engine/world.hpp"
 #include "mink/render/render_error.hpp"
+#include "recording.hpp"
 
 namespace {
 
@@ -433,7 +435,7 @@ TEST(RunCommand, UnwritableOutputsExit5NamingThePath) {
   expect_runtime_failure({"--trace", file + "/trace.csv"},
                          "cannot create the directory '" + file + "' for --trace file");
   expect_runtime_failure({"--save", file + "/end.json"},
-                         "cannot create the directory '" + file + "' for scene file");
+                         "cannot create the directory '" + file + "' for --save state file");
   // A directory where the file should be cannot be written (even by root).
   expect_runtime_failure({"--stats", dir.string()},
                          "cannot write --stats file '" + dir.string() + "': Is a directory");
@@ -507,44 +509,104 @@ TEST(RunCommand, MissingFfmpegExits4) {
   EXPECT_NE(r.err.find("mink: cannot start ffmpeg"), std::string::npos) << r.err;
 }
 
-// Resuming from --save: the pose and velocities of every body are kept exactly, but the
-// contact impulses the solver warm-starts from are not part of a scene, so the resumed run
-// starts its contacts cold and drifts from the uninterrupted one. On a settling pyramid that is
-// about a centimetre in 30 steps (the stack sags a little while the impulses build up again;
-// how much depends on the order contacts are solved in, which is the pairs' id order); in
-// chaotic scenes (rain_mixed, tumbler_400) the same tiny difference grows to decimetres,
-// as any perturbation would, so only the saved state itself is compared exactly there.
-TEST(RunCommand, SaveThenResumeFollowsTheUninterruptedRun) {
+// The "state hash H at step N" line --hash prints.
+std::string hash_line(const CliResult& r) {
+  const std::size_t at = r.out.find("state hash ");
+  return at == std::string::npos ? std::string("none in: " + r.out)
+                                 : r.out.substr(at, r.out.find('\n', at) - at);
+}
+
+// Resuming from --save is exact: the scene file carries the poses and velocities, FILE.state
+// beside it the rest (warm-start impulses, contact points, sleep timers, the broadphase's
+// order), so 90 steps, a save and 60 resumed steps end in the state of 150 uninterrupted steps,
+// bitwise, at any worker count. At step 90 rain_mixed has bodies in flight and contacts
+// sliding, which a cold start would change at once.
+TEST(RunCommand, SaveThenResumeEndsInTheUninterruptedState) {
+  World direct = build_world(builtin_scene("rain_mixed"));
+  for (int i = 0; i < 90; ++i) direct.step();
+  std::size_t flying = 0, sliding = 0;
+  for (const BodyId id : direct.bodies()) {
+    if (direct.body_type(id) != BodyType::dynamic) continue;
+    const std::vector<ContactData> contacts = direct.body_contacts(id);
+    const Real speed = direct.linear_velocity(id).norm();
+    if (contacts.empty() && speed > 1) ++flying;
+    for (const ContactData& c : contacts) {
+      const Vec2 tangent(-c.manifold.normal.y(), c.manifold.normal.x());
+      if (c.manifold.point_count > 0 && std::abs(direct.linear_velocity(id).dot(tangent)) > 0.05) {
+        ++sliding;
+      }
+    }
+  }
+  ASSERT_GT(flying, 10u);
+  ASSERT_GT(sliding, 10u);
+
   const auto dir = fresh_dir("resume");
-  const auto saved = (dir / "half.json").string();
-  ASSERT_EQ(run_cli({"run", "pyramid", "--steps", "60", "--no-render", "--save", saved}).code, 0);
-  // The saved file is the world as it stood: same state as 60 steps in-process.
-  World direct = build_world(builtin_scene("pyramid"));
-  for (int i = 0; i < 60; ++i) direct.step();
-  const SceneDef at_half = load_scene_file(saved);
-  const SceneDef expected = capture_scene(direct);
-  const auto ids = direct.bodies();
-  ASSERT_EQ(at_half.bodies.size(), expected.bodies.size());
-  for (std::size_t i = 0; i < expected.bodies.size(); ++i) {
-    const BodyDef& got = at_half.bodies[i].body;
-    const BodyDef& want = expected.bodies[i].body;
-    ASSERT_EQ(got.position, want.position) << i;
-    ASSERT_EQ(got.angle, want.angle) << i;
-    ASSERT_EQ(got.linear_velocity, want.linear_velocity) << i;
-    ASSERT_EQ(got.angular_velocity, want.angular_velocity) << i;
-    ASSERT_EQ(got.awake, want.awake) << i;
+  const auto half = (dir / "half.json").string();
+  CliResult r = run_cli({"run", "rain_mixed", "--steps", "90", "--no-render", "--save", half});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(half + ".state"));
+  EXPECT_NE(r.out.find("saved: " + half + " (state: " + half + ".state)"), std::string::npos);
+  const CliResult whole = run_cli({"run", "rain_mixed", "--steps", "150", "--no-render", "--hash",
+                                   "--save", (dir / "whole.json").string()});
+  ASSERT_EQ(whole.code, 0) << whole.err;
+  EXPECT_NE(hash_line(whole).find("at step 150"), std::string::npos) << whole.out;
+  for (const char* threads : {"1", "2"}) {
+    const auto end = (dir / (std::string("end") + threads + ".json")).string();
+    r = run_cli({"run", half, "--steps", "60", "--no-render", "--hash", "--threads", threads,
+                 "--save", end});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(r.err.find("notice"), std::string::npos) << r.err;
+    EXPECT_EQ(hash_line(r), hash_line(whole)) << threads << " threads";
+    EXPECT_EQ(read_text(end), read_text(dir / "whole.json"));
   }
-  const auto end = (dir / "end.json").string();
-  ASSERT_EQ(run_cli({"run", saved, "--steps", "30", "--no-render", "--save", end}).code, 0);
-  for (int i = 0; i < 30; ++i) direct.step();
-  const SceneDef resumed = load_scene_file(end);
-  double worst = 0;
-  for (std::size_t i = 0; i < ids.size(); ++i) {
-    worst = std::max(worst, (resumed.bodies[i].body.position - direct.position(ids[i])).norm());
+  // Without the state the run starts its contacts cold, and ends elsewhere.
+  const auto copy = (dir / "copy.json").string();
+  std::filesystem::copy_file(half, copy);
+  r = run_cli({"run", copy, "--steps", "60", "--no-render", "--hash"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(hash_line(r), hash_line(whole));
+  // A scene edited after saving still loads, cold, with a notice saying so.
+  {
+    std::ofstream edit(half, std::ios::app);
+    edit << "\n";
   }
-  EXPECT_LT(worst, 0.02);
-  std::printf("resume vs uninterrupted after 60 + 30 steps of pyramid: worst position gap %.3g m\n",
-              worst);
+  r = run_cli({"run", half, "--steps", "60", "--no-render", "--hash"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("notice: " + half + " changed since " + half + ".state was saved"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(hash_line(r), hash_line(whole));
+  // A state file that is not one is refused as bad input.
+  {
+    std::ofstream junk(copy + ".state", std::ios::binary);
+    junk << "not a state";
+  }
+  r = run_cli({"run", copy, "--steps", "1", "--no-render"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("not a state file"), std::string::npos) << r.err;
+}
+
+// A recorded run replays with the recorded hash at every step (the schedule's ragdolls made
+// and destroyed through the recorded calls); a tampered hash is named as the first divergence.
+TEST(RunCommand, RecordThenReplay) {
+  const auto dir = fresh_dir("record");
+  const auto file = (dir / "rain.rec").string();
+  CliResult r = run_cli({"run", "rain", "--steps", "20", "--no-render", "--record", file});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("recorded: " + file + " (20 steps)"), std::string::npos) << r.out;
+  r = run_cli({"replay", file, "--threads", "2"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("replayed 20 steps from step 0: every state hash equals"), std::string::npos)
+      << r.out;
+  cli::Recording recording = cli::load_recording(file);
+  for (cli::Recording::Entry& entry : recording.entries) {
+    if (entry.is_step && entry.step == 13) entry.hash ^= 1;
+  }
+  cli::save_recording(file, recording);
+  r = run_cli({"replay", file});
+  EXPECT_EQ(r.code, 6);
+  EXPECT_NE(r.out.find("replayed 12 steps"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("diverged at step 13"), std::string::npos) << r.out;
 }
 
 bool have_program(const char* name) {
