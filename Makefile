@@ -8,7 +8,7 @@ CTEST_FLAGS ?= --output-on-failure
 PYTHON ?= $(shell test -x /usr/bin/python3 && echo /usr/bin/python3 || command -v python3)
 CONFIGURE = cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DPython3_EXECUTABLE=$(PYTHON)
 
-.PHONY: all deps build python demo test bench docs format clean sanitize-test tsan-test soak
+.PHONY: all deps build python demo test bench docs format clean sanitize-test tsan-test soak fuzz
 
 all: build
 
@@ -79,6 +79,23 @@ soak: deps-test
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target mink_soak
 	$(BUILD_DIR)/bin/mink_soak 10 10000
 
+# The libFuzzer harnesses of fuzz/ (clang 14, ASan + UBSan), in their own build dir, each run
+# for FUZZ_SECONDS on its seed corpus fuzz/corpus/NAME/; what they learn collects in
+# build-fuzz/corpus/NAME/ and a crashing input is kept as build-fuzz/artifacts/NAME/crash-*.
+FUZZ_SECONDS ?= 60
+FUZZ_HARNESSES ?= scene_reader point_reader overlap_line world_api
+fuzz: deps-fuzz
+	cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
+	  -DMINK_FUZZ=ON -DMINK_BUILD_TESTS=OFF -DMINK_WITH_RENDER=OFF -DMINK_WITH_BOX2D=OFF $(CMAKE_FLAGS)
+	cmake --build build-fuzz -j $(JOBS) --target $(addprefix fuzz_,$(FUZZ_HARNESSES))
+	for name in $(FUZZ_HARNESSES); do \
+	  mkdir -p build-fuzz/corpus/$$name build-fuzz/artifacts/$$name && \
+	  build-fuzz/bin/fuzz_$$name -max_total_time=$(FUZZ_SECONDS) -timeout=20 -rss_limit_mb=2048 \
+	    -print_final_stats=1 -artifact_prefix=build-fuzz/artifacts/$$name/ \
+	    $$(test -f fuzz/$$name.dict && echo -dict=fuzz/$$name.dict) \
+	    build-fuzz/corpus/$$name fuzz/corpus/$$name || exit 1; \
+	done
+
 bench: deps-bench
 	$(CONFIGURE) -DMINK_BUILD_BENCH=ON $(CMAKE_FLAGS)
 	cmake --build $(BUILD_DIR) -j $(JOBS)
@@ -97,4 +114,4 @@ format:
 	git ls-files '*.cpp' '*.hpp' | xargs clang-format -i
 
 clean:
-	rm -rf $(BUILD_DIR) build-asan
+	rm -rf $(BUILD_DIR) build-asan build-tsan build-fuzz

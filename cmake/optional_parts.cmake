@@ -85,7 +85,7 @@ endif()
 # Python3_EXECUTABLE names (the Makefile passes Debian's /usr/bin/python3). Not in sanitizer
 # builds: an instrumented extension cannot be loaded into an uninstrumented interpreter.
 option(MINK_WITH_PYTHON "Build the Python module minkowski (pybind11, numpy)" ON)
-if(MINK_WITH_PYTHON AND (MINK_SANITIZE OR MINK_TSAN))
+if(MINK_WITH_PYTHON AND (MINK_SANITIZE OR MINK_TSAN OR MINK_FUZZ))
   message(STATUS "MINK_WITH_PYTHON is off in sanitizer builds (the interpreter is not "
                  "instrumented)")
   set(MINK_WITH_PYTHON OFF)

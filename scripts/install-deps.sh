@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the build needs, and only those that are missing.
-# Usage: scripts/install-deps.sh [build|python|test|bench|all]
+# Usage: scripts/install-deps.sh [build|python|test|bench|fuzz|all]
 set -euo pipefail
 
 profile=${1:-build}
@@ -11,14 +11,17 @@ python_pkgs=(python3-pandas python3-dask python3-distributed python3-tqdm)
 test_pkgs=(libgtest-dev libgmock-dev libcgal-dev libgmp-dev libmpfr-dev libbox2d-dev xvfb xauth ffmpeg
            python3-pytest "${python_pkgs[@]}" python3-pip python3-setuptools python3-wheel)
 bench_pkgs=(libbenchmark-dev libcgal-dev libgmp-dev libmpfr-dev libqhull-dev gnuplot-nox)
+# The fuzz harnesses: clang 14 and its runtimes (libFuzzer, ASan, UBSan).
+fuzz_pkgs=(clang-14 libclang-rt-14-dev)
 
 case "$profile" in
   build) wanted=("${build_pkgs[@]}") ;;
   python) wanted=("${build_pkgs[@]}" "${python_pkgs[@]}") ;;
   test) wanted=("${build_pkgs[@]}" "${test_pkgs[@]}") ;;
   bench) wanted=("${build_pkgs[@]}" "${test_pkgs[@]}" "${bench_pkgs[@]}") ;;
-  all) wanted=("${build_pkgs[@]}" "${test_pkgs[@]}" "${bench_pkgs[@]}") ;;
-  *) echo "install-deps: unknown profile '$profile' (build, python, test, bench or all)" >&2; exit 2 ;;
+  fuzz) wanted=("${build_pkgs[@]}" "${fuzz_pkgs[@]}") ;;
+  all) wanted=("${build_pkgs[@]}" "${test_pkgs[@]}" "${bench_pkgs[@]}" "${fuzz_pkgs[@]}") ;;
+  *) echo "install-deps: unknown profile '$profile' (build, python, test, bench, fuzz or all)" >&2; exit 2 ;;
 esac
 
 missing=()

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -468,6 +469,14 @@ void World::set_mass_data(BodyId id, const MassData& mass) {
               mass.rotational_inertia >= 0 && finite(mass.center),
           "set_mass_data of " + to_string(id) +
               ": mass and inertia must be finite and non-negative, the centre finite");
+  if ((mass.mass > 0 && mass.mass < min_mass_property) ||
+      (mass.rotational_inertia > 0 && mass.rotational_inertia < min_mass_property)) {
+    char numbers[160];
+    std::snprintf(numbers, sizeof numbers, "mass %.17g and rotational inertia %.17g", mass.mass,
+                  mass.rotational_inertia);
+    throw InvalidArgumentError("set_mass_data of " + to_string(id) + ": " + numbers +
+                               " must each be 0 or at least min_mass_property (1e-30)");
+  }
   WorldState& w = *state_;
   Body& b = w.body(id);
   if (b.type != BodyType::dynamic) return;

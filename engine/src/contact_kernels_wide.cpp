@@ -39,6 +39,14 @@ inline Wide wmin(Wide a, Wide b) {
 static_assert(sizeof(SolverBody) == sizeof(Wide));
 typedef std::int32_t WideIndex __attribute__((vector_size(32)));
 
+// Lanes of two vectors picked by constant indices (b's lanes count from kWideLanes): GCC's
+// __builtin_shuffle, which clang spells __builtin_shufflevector.
+#if defined(__clang__)
+#define MINK_SHUFFLE2(a, b, ...) __builtin_shufflevector(a, b, __VA_ARGS__)
+#else
+#define MINK_SHUFFLE2(a, b, ...) __builtin_shuffle(a, b, WideIndex{__VA_ARGS__})
+#endif
+
 inline Wide load_row(const SolverBody& b) {
   Wide row;
   __builtin_memcpy(&row, &b, sizeof row);
@@ -51,18 +59,18 @@ inline void transpose8(Wide (&m)[8]) {
   if constexpr (kWideLanes == 8) {
     Wide t[8], u[8];
     for (int i = 0; i < 8; i += 2) {
-      t[i] = __builtin_shuffle(m[i], m[i + 1], WideIndex{0, 8, 1, 9, 4, 12, 5, 13});
-      t[i + 1] = __builtin_shuffle(m[i], m[i + 1], WideIndex{2, 10, 3, 11, 6, 14, 7, 15});
+      t[i] = MINK_SHUFFLE2(m[i], m[i + 1], 0, 8, 1, 9, 4, 12, 5, 13);
+      t[i + 1] = MINK_SHUFFLE2(m[i], m[i + 1], 2, 10, 3, 11, 6, 14, 7, 15);
     }
     for (int i = 0; i < 8; i += 4) {
-      u[i] = __builtin_shuffle(t[i], t[i + 2], WideIndex{0, 1, 8, 9, 4, 5, 12, 13});
-      u[i + 1] = __builtin_shuffle(t[i], t[i + 2], WideIndex{2, 3, 10, 11, 6, 7, 14, 15});
-      u[i + 2] = __builtin_shuffle(t[i + 1], t[i + 3], WideIndex{0, 1, 8, 9, 4, 5, 12, 13});
-      u[i + 3] = __builtin_shuffle(t[i + 1], t[i + 3], WideIndex{2, 3, 10, 11, 6, 7, 14, 15});
+      u[i] = MINK_SHUFFLE2(t[i], t[i + 2], 0, 1, 8, 9, 4, 5, 12, 13);
+      u[i + 1] = MINK_SHUFFLE2(t[i], t[i + 2], 2, 3, 10, 11, 6, 7, 14, 15);
+      u[i + 2] = MINK_SHUFFLE2(t[i + 1], t[i + 3], 0, 1, 8, 9, 4, 5, 12, 13);
+      u[i + 3] = MINK_SHUFFLE2(t[i + 1], t[i + 3], 2, 3, 10, 11, 6, 7, 14, 15);
     }
     for (int i = 0; i < 4; ++i) {
-      m[i] = __builtin_shuffle(u[i], u[i + 4], WideIndex{0, 1, 2, 3, 8, 9, 10, 11});
-      m[i + 4] = __builtin_shuffle(u[i], u[i + 4], WideIndex{4, 5, 6, 7, 12, 13, 14, 15});
+      m[i] = MINK_SHUFFLE2(u[i], u[i + 4], 0, 1, 2, 3, 8, 9, 10, 11);
+      m[i + 4] = MINK_SHUFFLE2(u[i], u[i + 4], 4, 5, 6, 7, 12, 13, 14, 15);
     }
   }
 }

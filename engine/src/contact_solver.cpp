@@ -48,11 +48,6 @@ constexpr std::size_t kColorCount = kGraphColors;
 
 }  // namespace
 
-ContactSolver::ContactSolver() = default;
-ContactSolver::~ContactSolver() = default;
-ContactSolver::ContactSolver(ContactSolver&&) noexcept = default;
-ContactSolver& ContactSolver::operator=(ContactSolver&&) noexcept = default;
-
 std::size_t ContactSolver::color_count() const noexcept {
   std::size_t used = 0;
   for (std::size_t c = 0; c < kColorCount && c + 1 < color_begin_.size(); ++c) {
@@ -195,6 +190,12 @@ struct ContactSolver::Stage {
   std::uint32_t color;  // colour stages: kColorCount is the overflow
   std::uint32_t begin, end, block_size;
 };
+
+// Defined once Stage is complete: clang needs its size for the vector of stages.
+ContactSolver::ContactSolver() = default;
+ContactSolver::~ContactSolver() = default;
+ContactSolver::ContactSolver(ContactSolver&&) noexcept = default;
+ContactSolver& ContactSolver::operator=(ContactSolver&&) noexcept = default;
 
 namespace {
 

@@ -15,6 +15,7 @@
 
 #include "mink/engine/scene_fields.hpp"
 #include "mink/engine/world.hpp"
+#include "shape.hpp"
 
 namespace mink {
 
@@ -369,6 +370,14 @@ ShapeDef read_shape(const Json& value, const std::string& path) {
     throw SceneFileError(geometry_path, std::string("degenerate hull: ") + error.what());
   } catch (const Error& error) {
     throw SceneFileError(geometry_path, error.what());
+  }
+  // A density the solver could not invert the mass of is refused here, as create_shape would.
+  if (shape.type != ShapeType::chain) {
+    try {
+      detail::check_shape_mass(detail::make_geometry(shape), shape.density, "the shape");
+    } catch (const Error& error) {
+      throw SceneFileError(reader.child("density"), error.what());
+    }
   }
   return shape;
 }

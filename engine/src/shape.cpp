@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -175,6 +176,19 @@ void finish_attach(WorldState& w, std::uint32_t body_index, std::span<const std:
 
 }  // namespace
 
+void detail::check_shape_mass(const ShapeGeometry& geometry, Real density,
+                              const std::string& what) {
+  if (density == 0) return;
+  const MassData m = compute_mass(geometry, density);
+  if (m.mass > 0 && (m.mass < min_mass_property || m.rotational_inertia < min_mass_property)) {
+    char numbers[160];
+    std::snprintf(numbers, sizeof numbers, "mass %.17g kg and rotational inertia %.17g kg m^2",
+                  m.mass, m.rotational_inertia);
+    throw InvalidArgumentError(what + ": density " + std::to_string(density) + " gives " + numbers +
+                               ", below min_mass_property (1e-30)");
+  }
+}
+
 ShapeId World::create_shape(BodyId body_id, const ShapeDef& def) {
   const detail::RecordScope record(*this, detail::Call::create_shape, body_id, def);
   WorldState& w = *state_;
@@ -183,7 +197,9 @@ ShapeId World::create_shape(BodyId body_id, const ShapeDef& def) {
     throw InvalidArgumentError("create_shape: a chain is made by World::create_chain");
   }
   check_shape_def(def);
-  const std::uint32_t index = attach_shape(w, body_id.index, def, detail::make_geometry(def));
+  ShapeGeometry geometry = detail::make_geometry(def);
+  detail::check_shape_mass(geometry, def.density, "create_shape on " + to_string(body_id));
+  const std::uint32_t index = attach_shape(w, body_id.index, def, std::move(geometry));
   finish_attach(w, body_id.index, std::span(&index, 1));
   return w.shape_id(index);
 }
@@ -330,6 +346,7 @@ void World::set_shape_density(ShapeId id, Real density) {
   check_material_value(id, density, "set_shape_density");
   WorldState& w = *state_;
   Shape& s = w.shape(id);
+  detail::check_shape_mass(s.geometry, density, "set_shape_density of " + to_string(id));
   s.density = density;
   Body& b = w.bodies[s.body];
   b.mass_override = false;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <type_traits>
 #include <variant>
 #include <vector>
@@ -76,6 +77,10 @@ void for_each_core_point(const ShapeGeometry& geometry, Visit&& visit) {
 
 // The narrowphase geometry a (checked) ShapeDef describes; polygons are hulled here.
 ShapeGeometry make_geometry(const ShapeDef& def);
+
+// Throws InvalidArgumentError, naming `what`, when `density` gives the shape a positive mass or
+// rotational inertia below min_mass_property (the solver could not invert its body's).
+void check_shape_mass(const ShapeGeometry& geometry, Real density, const std::string& what);
 
 // Radius of the shape around its core (0 for segments, chains and sharp polygons).
 Real shape_radius(const ShapeGeometry& geometry);

@@ -15,6 +15,12 @@ enum class BodyType : std::uint8_t { static_body, kinematic, dynamic };
 /// @brief "static", "kinematic" or "dynamic", as scene files spell the type.
 std::string_view to_string(BodyType type) noexcept;
 
+/// The smallest positive mass (kg) and rotational inertia (kg m^2) a dynamic body may have,
+/// whether its shapes give them (density times area) or World::set_mass_data sets them. The
+/// solver works with their inverses in single precision: smaller ones would overflow there and
+/// turn the body's state into NaN. A shape, density or mass data that gives less is refused.
+inline constexpr Real min_mass_property = 1e-30;
+
 /// Everything World::create_body needs; plain data. Units: metres, radians, seconds.
 struct BodyDef {
   BodyType type = BodyType::static_body;  ///< static unless set

@@ -39,7 +39,9 @@ struct ShapeCastHit {
   ShapeId shape;      ///< the shape met first
   Real fraction = 0;  ///< of the translation, at the first touch (0: touching at the start)
   Vec2 point{0, 0};   ///< on that shape's surface, world
-  Vec2 normal{0, 0};  ///< unit, from that shape towards the cast one
+  /// Unit, from that shape towards the cast one; zero when the two overlap deeper than their
+  /// rounding at the start (fraction 0), where no direction separates them.
+  Vec2 normal{0, 0};
 };
 
 /// @brief The chain a chain segment belongs to (World::shape_chain).
@@ -92,7 +94,8 @@ class World {
   void destroy_body(BodyId id);
   /// @brief Attaches a shape (a polygon's `points` are hulled here); the body's mass is updated.
   /// @throws StaleIdError for a dead `body`; InvalidArgumentError (or a hull error) for a bad
-  /// `def`, and for a chain (use create_chain).
+  /// `def`, for a chain (use create_chain), and for a shape whose positive mass or inertia is
+  /// below min_mass_property.
   ShapeId create_shape(BodyId body, const ShapeDef& def);
   /// @brief Attaches a chain: one one-sided segment shape per chain edge, in order, each with
   /// its neighbours as ghost vertices. `def.type` must be ShapeType::chain.
@@ -207,7 +210,8 @@ class World {
   void set_target_transform(BodyId id, const Vec2& position, Real angle, Real time_step);
   /// Overrides the mass properties the shapes give (a dynamic body only); kept until a shape
   /// is added or removed or set_shape_density is called.
-  /// @throws InvalidArgumentError for a negative or non-finite mass or inertia.
+  /// @throws InvalidArgumentError for a negative or non-finite mass or inertia, or a positive
+  /// one below min_mass_property.
   void set_mass_data(BodyId id, const MassData& mass);
 
   /// @}
@@ -242,6 +246,8 @@ class World {
   /// world) and whether that chain loops; nothing for other shapes.
   std::optional<ChainMembership> shape_chain(ShapeId id) const;
   /// @brief Changes the density; the body's mass is recomputed.
+  /// @throws InvalidArgumentError for a negative or non-finite density, or one that gives the
+  /// shape a positive mass or inertia below min_mass_property.
   void set_shape_density(ShapeId id, Real density);
   /// @brief Changes the friction of the shape and of its existing contacts.
   void set_shape_friction(ShapeId id, Real friction);

@@ -27,8 +27,10 @@ struct ShapeCastOutput {
   Real fraction = 0;                     ///< of the translation
   Real separation = 0;                   ///< surface separation at `fraction`
   Vec2 point{0, 0};                      ///< the obstacle's surface point nearest the moving shape
-  Vec2 normal{0, 0};                     ///< unit, from the obstacle towards the moving shape
-  int iterations = 0;                    ///< distance evaluations made
+  /// Unit, from the obstacle towards the moving shape; zero when the cores overlap (as for
+  /// time_of_impact).
+  Vec2 normal{0, 0};
+  int iterations = 0;  ///< distance evaluations made
 };
 
 /// The first fraction at which the moving shape comes within `target` of the obstacle: the time
