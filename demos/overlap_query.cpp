@@ -102,6 +102,9 @@ std::string overlap_line(std::string_view line, std::size_t line_number, bool& o
     query = nlohmann::json::parse(line);
   } catch (const nlohmann::json::parse_error&) {
     return error_line("not valid JSON");
+  } catch (const nlohmann::json::out_of_range&) {
+    // The parser throws this, not parse_error, for a number beyond a double (1e999).
+    return error_line("a number is too large for a double");
   }
   if (!query.is_object()) return error_line("expected an object {\"a\": [...], \"b\": [...]}");
   for (const auto& item : query.items()) {

@@ -176,6 +176,20 @@ TEST(OverlapCommand, TouchingIsOverlapWithZeroDepth) {
   EXPECT_NEAR(out[2]["distance"].get<Real>(), 2.220446049250313e-16, 1e-30);
 }
 
+// Found by the overlap_line fuzz harness: a number beyond a double made the JSON parser throw
+// out_of_range, which nothing caught, and the command ended in std::terminate.
+TEST(OverlapCommand, ANumberTooLargeForADoubleIsAnErrorLine) {
+  const CliResult r = run_cli({"overlap", "-"},
+                              "{\"a\": [[1e999,0],[1,0],[0,1]], \"b\": [[3,0],[4,0],[3,1]]}\n"
+                              "{\"a\": [[0,0],[1,0],[0,1]], \"b\": [[3,0],[4,0],[3,1]]}\n");
+  const auto out = parse_lines(r.out);
+  EXPECT_EQ(r.code, 2);
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[0]["error"].get<std::string>(), "line 1: a number is too large for a double");
+  EXPECT_FALSE(out[1]["overlap"].get<bool>());
+  EXPECT_EQ(out[1]["distance"].get<Real>(), 2);
+}
+
 TEST(OverlapCommand, BadLinesAreReportedAndTheRestAnswered) {
   const CliResult r = run_cli({"overlap", "-"},
                               "{\"a\": [[0,0],[1,0],[0,1]], \"b\": [[3,0],[4,0],[3,1]]}\n"
