@@ -49,6 +49,9 @@ struct JointBodyState {
   Vec2 center{0, 0};
   Vec2 velocity{0, 0};
   Real angular_velocity = 0;
+  // What the body turned in the step just solved, counting whole turns (0 when the solver did
+  // not move it, and outside finishing a step).
+  Real turned = 0;
   // The velocity of the body's material point now at world point `p`.
   Vec2 velocity_at(const Vec2& p) const {
     return velocity +
@@ -82,10 +85,14 @@ inline Vec2 delta_position(const SolverBody& b) {
 inline Rotation delta_rotation(const SolverBody& b) {
   return {b.qc, b.qs};
 }
-// The body's rotation since the step began, as an angle (substeps turn at most an eighth of a
-// turn each, so a step's turn stays well inside (-pi, pi) for the substep counts used).
+// The body's rotation since the step began, as an angle counting whole turns: (qc, qs) gives
+// it exactly up to whole turns, the summed substep angle tells how many. A substep may turn
+// an eighth of a turn and more, so a fast body passes half a turn within one step, where the
+// bare arc tangent would jump by a full turn (and a joint's error with it).
 inline Real delta_angle(const SolverBody& b) {
-  return std::atan2(b.qs, b.qc);
+  constexpr Real two_pi = 2 * std::numbers::pi;
+  const Real exact = std::atan2(b.qs, b.qc);
+  return exact + two_pi * std::round((b.turn - exact) / two_pi);
 }
 
 // Applies impulse `p` at offset `r` (and angular impulse `l`) to B and the opposite to A.

@@ -149,6 +149,15 @@ void WorldState::prepare_joint(std::uint32_t j, std::uint32_t own_slot, Real h,
   }
 }
 
+// A joint's body as the solve left it, with the turn the solver counted (its pose alone gives
+// the turn only up to whole turns).
+detail::JointBodyState WorldState::finished_body_state(std::uint32_t body) const {
+  detail::JointBodyState state = joint_body_state(body);
+  const std::int32_t s = body_solver_index[body];
+  if (s >= 0) state.turned = detail::delta_angle(solver_bodies[static_cast<std::size_t>(s)]);
+  return state;
+}
+
 void WorldState::finish_joints() {
   joint_break_events.clear();
   for (const std::uint32_t j : step_joints) {
@@ -161,8 +170,8 @@ void WorldState::finish_joints() {
       joint_break_events.push_back(
           {joint_id(j), joint.reaction.force, joint.reaction.torque, b.user_data});
     }
-    const detail::JointBodyState sa = joint_body_state(joint.body[0]);
-    const detail::JointBodyState sb = joint_body_state(joint.body[1]);
+    const detail::JointBodyState sa = finished_body_state(joint.body[0]);
+    const detail::JointBodyState sb = finished_body_state(joint.body[1]);
     std::visit([&](auto& k) { detail::finish_kind(k, sa, sb); }, joint.kind);
   }
   std::sort(joint_break_events.begin(), joint_break_events.end(),

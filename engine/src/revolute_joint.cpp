@@ -5,6 +5,7 @@
 #include "revolute_joint.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "joint_rows.hpp"
@@ -66,7 +67,13 @@ Real coordinate(const RevoluteJoint& joint, const JointBodyState& a, const Joint
 }
 
 void finish(RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b) {
-  joint.angle = coordinate(joint, a, b);
+  // The poses give the angle up to whole turns, taken nearest the last; a fast pair turns
+  // half a turn and more in a step, and the solver's count of its turn says by how many whole
+  // turns the nearest is off.
+  constexpr Real two_pi = 2 * std::numbers::pi;
+  const Real nearest = coordinate(joint, a, b);
+  const Real whole = std::round((joint.angle + (b.turned - a.turned) - nearest) / two_pi);
+  joint.angle = nearest + two_pi * whole;
 }
 
 Real speed(const RevoluteJoint&, const JointBodyState& a, const JointBodyState& b) {

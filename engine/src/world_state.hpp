@@ -160,6 +160,7 @@ struct WorldState {
   // True when a joint between the two bodies keeps their shapes from colliding.
   bool joint_prevents_contact(std::uint32_t body_a, std::uint32_t body_b) const;
   detail::JointBodyState joint_body_state(std::uint32_t body) const;
+  detail::JointBodyState finished_body_state(std::uint32_t body) const;
   // The joint's free coordinate and its rate now (World::joint_coordinate, joint_speed).
   Real joint_coordinate(std::uint32_t index) const;
   Real joint_speed(std::uint32_t index) const;
