@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "mink/engine/scene.hpp"
@@ -61,7 +62,11 @@ namespace mink::python {
 /// of racing with the step.
 class WorldHandle {
  public:
-  explicit WorldHandle(const SceneDef& scene) : run_(scene) {}
+  /// `schedule_scene`: the built-in scene whose schedule the run follows (empty: none), so
+  /// that a pickled world can be rebuilt with it.
+  explicit WorldHandle(const SceneDef& scene, std::string schedule_scene = {})
+      : run_(scene), schedule_scene_(std::move(schedule_scene)) {}
+  const std::string& schedule_scene() const noexcept { return schedule_scene_; }
 
   /// @throws std::runtime_error (RuntimeError) while another thread steps the world.
   World& world() {
@@ -82,6 +87,7 @@ class WorldHandle {
   void check_idle() const;
   class StepGuard;
   SceneRun run_;
+  std::string schedule_scene_;
   std::atomic<bool> stepping_{false};
 };
 using WorldPtr = std::shared_ptr<WorldHandle>;

@@ -2,6 +2,7 @@
 // each carrying the engine's message (and the offending point's index, or the scene file's
 // JSON path, where the C++ error has one).
 #include "bindings.hpp"
+#include "mink/byte_stream.hpp"
 #include "mink/engine/scene_file.hpp"
 #include "mink/engine/stale_id_error.hpp"
 #include "mink/error.hpp"
@@ -22,6 +23,7 @@ struct ErrorClasses {
   PyObject* stale_id = nullptr;
   PyObject* output = nullptr;
   PyObject* gl_context = nullptr;
+  PyObject* snapshot = nullptr;
 };
 ErrorClasses classes;
 
@@ -84,6 +86,11 @@ void bind_errors(py::module_& m) {
       m, "GlContextError",
       "A GL context could not be made or a GL call failed; the message names the backend.",
       py::make_tuple(error));
+  classes.snapshot = new_class(
+      m, "SnapshotError",
+      "A snapshot (or pickled World) that cannot be restored: another format version or build, "
+      "truncated or corrupt. The message says which; the world is left as it was.",
+      py::make_tuple(error, value_error));
 
   // Most derived first: a SceneFileError is also an InvalidArgumentError.
   py::register_exception_translator([](std::exception_ptr thrown) {
@@ -103,6 +110,8 @@ void bind_errors(py::module_& m) {
       raise(classes.output, e.what());
     } catch (const GlContextError& e) {
       raise(classes.gl_context, e.what());
+    } catch (const SnapshotError& e) {
+      raise(classes.snapshot, e.what());
     } catch (const Error& e) {
       raise(classes.error, e.what());
     }

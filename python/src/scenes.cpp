@@ -11,9 +11,9 @@ namespace mink::python {
 
 namespace {
 
-WorldPtr scene_world(SceneDef scene, const py::kwargs& settings) {
+WorldPtr scene_world(SceneDef scene, const py::kwargs& settings, std::string schedule_scene = {}) {
   scene.world = world_def(scene.world, settings);
-  return std::make_shared<WorldHandle>(scene);
+  return std::make_shared<WorldHandle>(scene, std::move(schedule_scene));
 }
 
 constexpr const char* kSettingsDoc =
@@ -51,7 +51,9 @@ void bind_scenes(py::module_& m, WorldClass& world) {
       .def(
           "builtin_scene",
           [](const std::string& name, const py::kwargs& settings) {
-            return scene_world(builtin_scene(name), settings);
+            SceneDef scene = builtin_scene(name);
+            const bool scheduled = static_cast<bool>(scene.schedule);
+            return scene_world(std::move(scene), settings, scheduled ? name : std::string());
           },
           py::arg("name"), builtin_doc.c_str())
       .def(

@@ -1,8 +1,11 @@
 // minkowski.World: settings as keyword arguments, stepping without the GIL, the bodies,
 // shapes and joints it holds.
+#include <span>
 #include <stdexcept>
+#include <string_view>
 
 #include "bindings.hpp"
+#include "mink/byte_stream.hpp"
 #include "mink/engine/scene_fields.hpp"
 #include "mink/engine/scene_file.hpp"
 #include "names.hpp"
@@ -157,6 +160,30 @@ std::vector<Ref> refs(const WorldPtr& world, const std::vector<Id>& ids) {
   return out;
 }
 
+// What a pickled World holds: this number, the built-in scene whose schedule it follows (or
+// ""), its worker count and its snapshot.
+constexpr int kPickleFormat = 1;
+
+void restore_run(WorldHandle& w, const py::bytes& snapshot) {
+  const std::string_view bytes = snapshot;
+  w.run().restore(std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()));
+}
+
+WorldPtr unpickle_world(const py::tuple& state) {
+  if (state.size() != 4 || !py::isinstance<py::int_>(state[0]) ||
+      state[0].cast<int>() != kPickleFormat || !py::isinstance<py::str>(state[1]) ||
+      !py::isinstance<py::int_>(state[2]) || !py::isinstance<py::bytes>(state[3])) {
+    throw SnapshotError("a pickled World is (" + std::to_string(kPickleFormat) +
+                        ", scene name, workers, snapshot bytes); got another tuple");
+  }
+  const auto schedule_scene = state[1].cast<std::string>();
+  SceneDef scene = schedule_scene.empty() ? SceneDef{} : builtin_scene(schedule_scene);
+  scene.world.worker_count = state[2].cast<int>();
+  auto world = std::make_shared<WorldHandle>(scene, schedule_scene);
+  restore_run(*world, state[3].cast<py::bytes>());
+  return world;
+}
+
 }  // namespace
 
 WorldClass bind_world(py::module_& m) {
@@ -306,6 +333,33 @@ keyword arguments as BodyDef's properties (position, angle, linear_velocity, ...
       .def_property_readonly(
           "profile", [](WorldHandle& w) { return profile_dict(w.world().profile()); },
           "Wall time of each phase of the last step, in milliseconds.")
+      .def(
+          "snapshot",
+          [](WorldHandle& w) {
+            const std::vector<std::uint8_t> bytes = w.run().snapshot();
+            return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+          },
+          "The whole simulation state as bytes (World::snapshot, with a built-in scene's "
+          "schedule): restore() rolls this world back to it exactly.")
+      .def(
+          "restore", [](WorldHandle& w, const py::bytes& snapshot) { restore_run(w, snapshot); },
+          py::arg("snapshot"),
+          "Rolls the world back (or forward) to a snapshot() of it, in place: it then continues "
+          "bitwise as the world it was taken from. Bodies, shapes and joints made after the "
+          "snapshot are gone (using them raises StaleIdError). Raises SnapshotError for bytes "
+          "from another build or a corrupt or truncated snapshot, the world left as it was.")
+      .def_property_readonly(
+          "state_hash", [](WorldHandle& w) { return w.world().state_hash(); },
+          "A 64-bit hash of the simulation state, for desync checks: worlds with equal states "
+          "have equal hashes.")
+      .def(py::pickle(
+          [](WorldHandle& w) {
+            const std::vector<std::uint8_t> bytes = w.run().snapshot();
+            return py::make_tuple(
+                kPickleFormat, w.schedule_scene(), w.world().def().worker_count,
+                py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+          },
+          [](const py::tuple& state) { return unpickle_world(state); }))
       .def("__repr__", [](WorldHandle& w) {
         return "<minkowski.World: " + std::to_string(w.world().body_count()) + " bodies, " +
                std::to_string(w.world().joint_count()) + " joints, step " +

@@ -76,6 +76,7 @@ def test_a_world_built_from_python_equals_the_scene_file(data_dir):
     assert from_python.settings == from_file.settings
     assert [s.type for s in from_python.shapes] == [s.type for s in from_file.shapes]
     assert [j.type for j in from_python.joints] == [j.type for j in from_file.joints]
+    assert from_python.state_hash == from_file.state_hash
     # The same bodies, shapes and joints made in the same order step bitwise alike.
     for _ in range(4):
         from_file.step(30)
@@ -85,6 +86,7 @@ def test_a_world_built_from_python_equals_the_scene_file(data_dir):
                                              getattr(from_file, array)())
     assert [j.coordinate for j in from_python.joints] == [j.coordinate for j in from_file.joints]
     assert from_python.to_json() == from_file.to_json()
+    assert from_python.state_hash == from_file.state_hash
 
 
 def test_to_json_and_parse_scene_round_trip(tmp_path):
