@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -108,8 +109,14 @@ TEST(OutputFiles, SaveKilledAtRandomMomentsLeavesTheOldOrTheNewFile) {
     (now == earlier ? found_earlier : found_new) += 1;
     for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
       const std::string name = entry.path().filename().string();
-      if (name == "state.json" || name == "reference.json") continue;
-      ASSERT_TRUE(is_temporary_of(name, "state.json")) << "left behind: " << name;
+      // The solver state beside each scene file (FILE.state, written first) carries a hash of
+      // the JSON it belongs to, so a state file newer than its scene is found out and ignored.
+      if (name == "state.json" || name == "reference.json" || name == "state.json.state" ||
+          name == "reference.json.state") {
+        continue;
+      }
+      ASSERT_TRUE(is_temporary_of(name, "state.json") || is_temporary_of(name, "state.json.state"))
+          << "left behind: " << name;
       fs::remove(entry.path());
     }
     // The next kill starts from the earlier file again.
@@ -128,6 +135,7 @@ TEST(OutputFiles, FullDiskIsExit5AndLeavesEarlierFiles) {
   ASSERT_EQ(
       run_cli({"run", "pyramid", "--steps", "1", "--no-render", "--save", saved.string()}).code, 0);
   const std::string earlier = read_text(saved);
+  const std::string earlier_state = read_text(saved.string() + ".state");
   const CliResult r = run_cli({"run", "pyramid", "--steps", "200", "--no-render", "--stats",
                                "/dev/full", "--save", saved.string()});
   EXPECT_EQ(r.code, mink::cli::kOutputFailure) << r.err;
@@ -135,11 +143,13 @@ TEST(OutputFiles, FullDiskIsExit5AndLeavesEarlierFiles) {
             std::string::npos)
       << r.err;
   EXPECT_EQ(read_text(saved), earlier);
+  EXPECT_EQ(read_text(saved.string() + ".state"), earlier_state);
   std::vector<std::string> entries;
   for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
     entries.push_back(entry.path().filename().string());
   }
-  EXPECT_EQ(entries, std::vector<std::string>{"end.json"});
+  std::sort(entries.begin(), entries.end());
+  EXPECT_EQ(entries, (std::vector<std::string>{"end.json", "end.json.state"}));
 }
 
 // A file that cannot be completed is never renamed over the earlier one, and its temporary
