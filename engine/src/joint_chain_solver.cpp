@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <cmath>
 
 #include "joint_rows.hpp"
 
@@ -75,9 +76,15 @@ void JointChainSolver::build(IdPool<Joint>& joints, const std::vector<std::uint3
         other = k;
         continue;
       }
-      neighbour[k][s] = other;
       const JointFrame& g = joints[kept[other]].frame;
       const int t = g.bodies[0].solver == f.bodies[s].solver && movable(g.bodies[0]) ? 0 : 1;
+      // Two joints from this body to one other body, or to two fixed ones, pin it twice: their
+      // four rows on its three freedoms are redundant and the direct solve's pivot would
+      // vanish, so the path breaks here and each joint is solved on its own.
+      const JointBody& f_far = f.bodies[static_cast<std::size_t>(1 - s)];
+      const JointBody& g_far = g.bodies[static_cast<std::size_t>(1 - t)];
+      if ((!movable(f_far) && !movable(g_far)) || f_far.solver == g_far.solver) continue;
+      neighbour[k][s] = other;
       neighbour[other][t] = k;
     }
   }
@@ -135,6 +142,10 @@ void JointChainSolver::build(IdPool<Joint>& joints, const std::vector<std::uint3
   rows_.resize(chain_joints_.size());
 }
 
+namespace {
+constexpr Real kRedundantPivot = 1e-12;
+}  // namespace
+
 void JointChainSolver::solve(IdPool<Joint>& joints, SolverBody* bodies, bool use_bias) {
   for (std::size_t p = 0; p + 1 < path_begin_.size(); ++p) {
     const std::uint32_t begin = path_begin_[p], end = path_begin_[p + 1];
@@ -173,8 +184,12 @@ void JointChainSolver::solve(IdPool<Joint>& joints, SolverBody* bodies, bool use
         pivot -= prev.upper.transpose() * prev.eliminated;
         row.rhs -= prev.upper.transpose() * prev.rhs;
       }
+      // A pivot that still vanishes against its rows' own scale is a redundancy the path's
+      // making did not see (a chain closing on fixed bodies in a degenerate pose): its inverse
+      // would be rounding blown up, so the row takes no share of this pass instead.
+      const Real scale = row.diagonal.trace();
       const Real det = pivot.determinant();
-      if (det == 0) {
+      if (!(std::abs(det) > kRedundantPivot * scale * scale)) {
         row.eliminated.setZero();
         row.rhs.setZero();
         continue;

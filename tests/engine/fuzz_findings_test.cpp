@@ -143,5 +143,43 @@ TEST(FuzzFindings, CastShapeNormalIsZeroOnlyForAStartInside) {
   EXPECT_NEAR(above->normal.y(), 1, 1e-9);
 }
 
+// Capsules hung from a static body, the first by two pins at different points. The direct
+// solve for revolute chains took both pins as one chain through the first link: four rows on
+// its three freedoms, whose pivot vanished but for rounding; inverted, it turned the chain NaN
+// within three steps. A body pinned twice to one body (or to two fixed ones) now ends a chain.
+TEST(FuzzFindings, AChainLinkPinnedTwiceStaysFinite) {
+  const Real step = 0.25 * std::numbers::sqrt2 / 2;  // a link's half length along each axis
+  std::string json = R"({"format": "minkowski-scene", "version": 1,
+    "world": {"enable_sleep": false}, "bodies": [{"type": "static", "position": [0, 20], "shapes": []})";
+  for (int k = 1; k <= 11; ++k) {
+    const Real c = step * (2 * k - 1);
+    json += R"(, {"type": "dynamic", "position": [)" + std::to_string(c) + ", " +
+            std::to_string(20 - c) + R"(], "angle": -0.7853981633974483, "shapes": [{"capsule":
+            {"center1": [-0.25, 0], "center2": [0.25, 0], "radius": 0.05}}]})";
+  }
+  json += R"(], "joints": [)";
+  const auto pin = [&](int a, int b, int at) {
+    const Real p = step * 2 * at;
+    return R"({"type": "revolute", "body_a": )" + std::to_string(a) + R"(, "body_b": )" +
+           std::to_string(b) + R"(, "anchor": [)" + std::to_string(p) + ", " +
+           std::to_string(20 - p) + "]}";
+  };
+  // The links joined as the fuzzed scene had them: some pins swapped or skipped, so the
+  // chains the direct solve finds run through the doubly pinned link.
+  json += pin(0, 1, 0) + ", " + pin(0, 1, 1) + ", " + pin(2, 3, 2) + ", " + pin(3, 4, 3) + ", " +
+          pin(8, 5, 4) + ", " + pin(5, 6, 5) + ", " + pin(6, 4, 6) + ", " + pin(7, 8, 7) + ", " +
+          pin(8, 9, 8) + ", " + pin(9, 10, 9) + ", " + pin(10, 11, 10) + "]}";
+  World world = build_world(parse_scene_json(json));
+  ASSERT_TRUE(world.def().direct_joint_chains);
+  const BodyId first = world.bodies()[1];
+  const Vec2 start = world.position(first);
+  for (int i = 0; i < 300; ++i) {
+    world.step();
+    ASSERT_TRUE(all_finite(world)) << "step " << i;
+  }
+  // Pinned at two points, the first link cannot move.
+  EXPECT_LT((world.position(first) - start).norm(), 0.01);
+}
+
 }  // namespace
 }  // namespace mink
