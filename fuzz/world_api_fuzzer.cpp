@@ -108,9 +108,9 @@ struct JointRecord {
 };
 
 // One run of the byte program against one world.
-class Session {
+class CallSequence {
  public:
-  Session(const std::uint8_t* data, std::size_t size, int workers)
+  CallSequence(const std::uint8_t* data, std::size_t size, int workers)
       : input_(data, size), world_(make_world_def(workers)), other_(mink::WorldDef{}) {
     // Ids of another world are never valid here.
     foreign_body_ = other_.create_body({});
@@ -1171,8 +1171,8 @@ class Session {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 2048) return 0;
-  const std::vector<std::uint64_t> one_worker = Session(data, size, 1).run();
-  const std::vector<std::uint64_t> two_workers = Session(data, size, 2).run();
+  const std::vector<std::uint64_t> one_worker = CallSequence(data, size, 1).run();
+  const std::vector<std::uint64_t> two_workers = CallSequence(data, size, 2).run();
   if (one_worker != two_workers) fail("1 and 2 workers give different states");
   return 0;
 }
