@@ -1,6 +1,7 @@
 // The recorder hook and its other half: World::replay_call runs a call as the hook saw it.
 
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "mink/byte_stream.hpp"
@@ -19,13 +20,13 @@ T read(LoadArchive& archive) {
   return value;
 }
 
-// Reads the arguments in order (a braced list is evaluated left to right), checks that they
-// are all the bytes hold, then makes the call.
-template <typename... Args, typename Call>
-void replay(LoadArchive& archive, Call&& call) {
-  std::tuple<Args...> args{read<Args>(archive)...};
+// Reads the arguments of `member` in order (a braced list is evaluated left to right), checks
+// that they are all the bytes hold, then calls it on `world`.
+template <typename Result, typename... Params>
+void replay(World& world, LoadArchive& archive, Result (World::*member)(Params...)) {
+  std::tuple<std::decay_t<Params>...> args{read<std::decay_t<Params>>(archive)...};
   if (archive.in.remaining() != 0) archive.in.fail("a recorded call longer than its arguments");
-  std::apply(call, args);
+  std::apply([&](const auto&... arg) { (void)(world.*member)(arg...); }, args);
 }
 
 }  // namespace
@@ -41,101 +42,87 @@ void World::replay_call(std::span<const std::uint8_t> encoded) {
   using C = detail::Call;
   switch (call) {
     case C::create_body:
-      return replay<BodyDef>(a, [&](const BodyDef& d) { create_body(d); });
+      return replay(*this, a, &World::create_body);
     case C::destroy_body:
-      return replay<BodyId>(a, [&](BodyId id) { destroy_body(id); });
+      return replay(*this, a, &World::destroy_body);
     case C::create_shape:
-      return replay<BodyId, ShapeDef>(a, [&](BodyId b, const ShapeDef& d) { create_shape(b, d); });
+      return replay(*this, a, &World::create_shape);
     case C::create_chain:
-      return replay<BodyId, ShapeDef>(a, [&](BodyId b, const ShapeDef& d) { create_chain(b, d); });
+      return replay(*this, a, &World::create_chain);
     case C::destroy_shape:
-      return replay<ShapeId>(a, [&](ShapeId id) { destroy_shape(id); });
+      return replay(*this, a, &World::destroy_shape);
     case C::set_gravity:
-      return replay<Vec2>(a, [&](const Vec2& g) { set_gravity(g); });
+      return replay(*this, a, &World::set_gravity);
     case C::enable_sleep:
-      return replay<bool>(a, [&](bool on) { enable_sleep(on); });
+      return replay(*this, a, &World::enable_sleep);
     case C::set_transform:
-      return replay<BodyId, Vec2, Real>(
-          a, [&](BodyId id, const Vec2& p, Real angle) { set_transform(id, p, angle); });
+      return replay(*this, a, &World::set_transform);
     case C::set_linear_velocity:
-      return replay<BodyId, Vec2>(a, [&](BodyId id, const Vec2& v) { set_linear_velocity(id, v); });
+      return replay(*this, a, &World::set_linear_velocity);
     case C::set_angular_velocity:
-      return replay<BodyId, Real>(a, [&](BodyId id, Real w) { set_angular_velocity(id, w); });
+      return replay(*this, a, &World::set_angular_velocity);
     case C::apply_force:
-      return replay<BodyId, Vec2, Vec2>(
-          a, [&](BodyId id, const Vec2& f, const Vec2& p) { apply_force(id, f, p); });
+      return replay(*this, a, &World::apply_force);
     case C::apply_torque:
-      return replay<BodyId, Real>(a, [&](BodyId id, Real t) { apply_torque(id, t); });
+      return replay(*this, a, &World::apply_torque);
     case C::apply_linear_impulse:
-      return replay<BodyId, Vec2, Vec2>(
-          a, [&](BodyId id, const Vec2& i, const Vec2& p) { apply_linear_impulse(id, i, p); });
+      return replay(*this, a, &World::apply_linear_impulse);
     case C::set_awake:
-      return replay<BodyId, bool>(a, [&](BodyId id, bool on) { set_awake(id, on); });
+      return replay(*this, a, &World::set_awake);
     case C::set_body_type:
-      return replay<BodyId, BodyType>(a, [&](BodyId id, BodyType t) { set_body_type(id, t); });
+      return replay(*this, a, &World::set_body_type);
     case C::set_enabled:
-      return replay<BodyId, bool>(a, [&](BodyId id, bool on) { set_enabled(id, on); });
+      return replay(*this, a, &World::set_enabled);
     case C::set_fixed_rotation:
-      return replay<BodyId, bool>(a, [&](BodyId id, bool on) { set_fixed_rotation(id, on); });
+      return replay(*this, a, &World::set_fixed_rotation);
     case C::set_bullet:
-      return replay<BodyId, bool>(a, [&](BodyId id, bool on) { set_bullet(id, on); });
+      return replay(*this, a, &World::set_bullet);
     case C::set_continuous_threshold:
-      return replay<BodyId, Real>(a, [&](BodyId id, Real t) { set_continuous_threshold(id, t); });
+      return replay(*this, a, &World::set_continuous_threshold);
     case C::set_target_transform:
-      return replay<BodyId, Vec2, Real, Real>(a,
-                                              [&](BodyId id, const Vec2& p, Real angle, Real dt) {
-                                                set_target_transform(id, p, angle, dt);
-                                              });
+      return replay(*this, a, &World::set_target_transform);
     case C::set_mass_data:
-      return replay<BodyId, MassData>(a,
-                                      [&](BodyId id, const MassData& m) { set_mass_data(id, m); });
+      return replay(*this, a, &World::set_mass_data);
     case C::set_shape_density:
-      return replay<ShapeId, Real>(a, [&](ShapeId id, Real v) { set_shape_density(id, v); });
+      return replay(*this, a, &World::set_shape_density);
     case C::set_shape_friction:
-      return replay<ShapeId, Real>(a, [&](ShapeId id, Real v) { set_shape_friction(id, v); });
+      return replay(*this, a, &World::set_shape_friction);
     case C::set_shape_restitution:
-      return replay<ShapeId, Real>(a, [&](ShapeId id, Real v) { set_shape_restitution(id, v); });
+      return replay(*this, a, &World::set_shape_restitution);
     case C::set_shape_filter:
-      return replay<ShapeId, Filter>(a,
-                                     [&](ShapeId id, const Filter& f) { set_shape_filter(id, f); });
+      return replay(*this, a, &World::set_shape_filter);
     case C::create_joint:
-      return replay<JointDef>(a, [&](const JointDef& d) { create_joint(d); });
+      return replay(*this, a, &World::create_joint);
     case C::destroy_joint:
-      return replay<JointId>(a, [&](JointId id) { destroy_joint(id); });
+      return replay(*this, a, &World::destroy_joint);
     case C::set_joint_motor:
-      return replay<JointId, JointMotor>(
-          a, [&](JointId id, const JointMotor& m) { set_joint_motor(id, m); });
+      return replay(*this, a, &World::set_joint_motor);
     case C::set_joint_spring:
-      return replay<JointId, JointSpring>(
-          a, [&](JointId id, const JointSpring& s) { set_joint_spring(id, s); });
+      return replay(*this, a, &World::set_joint_spring);
     case C::set_joint_limit:
-      return replay<JointId, JointLimit>(
-          a, [&](JointId id, const JointLimit& l) { set_joint_limit(id, l); });
+      return replay(*this, a, &World::set_joint_limit);
     case C::set_distance_length:
-      return replay<JointId, Real>(a, [&](JointId id, Real l) { set_distance_length(id, l); });
+      return replay(*this, a, &World::set_distance_length);
     case C::set_motor_target:
-      return replay<JointId, Vec2, Real>(
-          a, [&](JointId id, const Vec2& o, Real angle) { set_motor_target(id, o, angle); });
+      return replay(*this, a, &World::set_motor_target);
     case C::set_motor_limits:
-      return replay<JointId, Real, Real>(
-          a, [&](JointId id, Real f, Real t) { set_motor_limits(id, f, t); });
+      return replay(*this, a, &World::set_motor_limits);
     case C::set_weld_springs:
-      return replay<JointId, Real, Real, Real, Real>(
-          a, [&](JointId id, Real lh, Real ld, Real ah, Real ad) {
-            set_weld_springs(id, lh, ld, ah, ad);
-          });
+      return replay(*this, a, &World::set_weld_springs);
     case C::set_joint_break:
-      return replay<JointId, Real, Real>(
-          a, [&](JointId id, Real f, Real t) { set_joint_break(id, f, t); });
+      return replay(*this, a, &World::set_joint_break);
     case C::step:
-      return replay<>(a, [&] { step(); });
+      return replay(*this, a, static_cast<void (World::*)()>(&World::step));
     case C::step_with:
-      return replay<Real, int>(a, [&](Real dt, int substeps) { step(dt, substeps); });
+      return replay(*this, a, static_cast<void (World::*)(Real, int)>(&World::step));
     case C::advance:
-      return replay<Real>(a, [&](Real seconds) { advance(seconds); });
-    case C::restore:
-      return replay<std::vector<std::uint8_t>>(
-          a, [&](const std::vector<std::uint8_t>& bytes) { restore(bytes); });
+      return replay(*this, a, &World::advance);
+    case C::restore: {
+      // Recorded as a byte list; restore takes a view of one.
+      const auto bytes = read<std::vector<std::uint8_t>>(a);
+      if (in.remaining() != 0) in.fail("a recorded call longer than its arguments");
+      return restore(bytes);
+    }
     case C::count:
       break;
   }
