@@ -152,18 +152,16 @@ SceneDef junkyard() {
   }
   const std::size_t pusher =
       add_body(scene, BodyType::kinematic, Vec2(0, 0), {ShapeDef::box(2, 4, Vec2(0, 4))});
-  // Each step the pusher is steered to where its path is at the end of the step.
   // Each step the pusher is steered to where its path is at the end of the step: the actions
   // keep nothing but the scene's id.
   scene.schedule = [pusher](World&, const SceneIds& ids) -> SceneActions {
-    return {.act =
-                [id = ids.bodies[pusher]](World& world, std::uint64_t step) {
-                  const Real dt = world.def().time_step;
-                  const Real t = dt * static_cast<Real>(step);
-                  world.set_target_transform(id, Vec2(60 * std::sin(0.2 * t), 0), 0, dt);
-                },
-            .save = nullptr,
-            .load = nullptr};
+    SceneActions actions;
+    actions.act = [id = ids.bodies[pusher]](World& world, std::uint64_t step) {
+      const Real dt = world.def().time_step;
+      const Real t = dt * static_cast<Real>(step);
+      world.set_target_transform(id, Vec2(60 * std::sin(0.2 * t), 0), 0, dt);
+    };
+    return actions;
   };
   return scene;
 }
@@ -240,17 +238,7 @@ class RainActions {
  private:
   template <typename Archive>
   static void fields(Archive& archive, RainActions& rain) {
-    if constexpr (Archive::loading) {
-      rain.groups_.resize(archive.count(1));
-    } else {
-      archive.count(rain.groups_.size());
-    }
-    for (Group& group : rain.groups_) {
-      for (SceneIds& human : group) {
-        archive(human.bodies);
-        archive(human.joints);
-      }
-    }
+    archive(rain.groups_);
     archive(rain.columns_);
     archive(rain.oldest_);
   }

@@ -39,9 +39,13 @@ void SceneRun::restore(std::span<const std::uint8_t> snapshot) {
   if (!actions_.load && !schedule.empty()) {
     throw SnapshotError("run snapshot carries schedule state this scene's schedule does not keep");
   }
+  if (!actions_.load) {
+    world_.restore(world);
+    return;
+  }
+  // The schedule's state is read after the world's: should it not read, the world goes back.
   const std::vector<std::uint8_t> before = world_.snapshot();
   world_.restore(world);
-  if (!actions_.load) return;
   try {
     actions_.load(schedule, world_);
   } catch (...) {

@@ -10,6 +10,7 @@
 #include "contact.hpp"
 #include "joint.hpp"
 #include "mink/byte_stream.hpp"
+#include "mink/engine/scene_schedule.hpp"
 #include "sensor.hpp"
 #include "shape.hpp"
 
@@ -70,6 +71,11 @@ void io(Archive& a, ShapeId& id) {
 template <typename Archive>
 void io(Archive& a, JointId& id) {
   id_io(a, id);
+}
+template <typename Archive>
+void io(Archive& a, SceneIds& ids) {
+  a(ids.bodies);
+  a(ids.joints);
 }
 template <typename Archive>
 void io(Archive& a, JointMotor& m) {
