@@ -119,8 +119,7 @@ int run_scene(const RunOptions& options, Streams streams) {
   std::vector<BodyId> bodies = run.ids().bodies;   // body i of the scene is bodies[i]
   std::vector<JointId> joints = run.ids().joints;  // likewise joint i
   // A scene file saved by --save resumes from the state saved beside it, exactly.
-  const auto builtins = builtin_scene_names();
-  if (std::find(builtins.begin(), builtins.end(), options.scene) == builtins.end()) {
+  if (!is_builtin_scene(options.scene)) {
     if (std::optional<std::vector<std::uint8_t>> state =
             find_saved_state(options.scene, streams.err)) {
       if (options.world_settings.empty()) {
@@ -373,8 +372,8 @@ Action add_replay_command(CLI::App& app, Streams streams) {
   auto options = std::make_shared<ReplayOptions>();
   CLI::App* command = app.add_subcommand(
       "replay",
-      "Replay a recording (mink run --record, mink sandbox --record) and check the state hash "
-      "of every step; exit code 6 names the first step that diverges.");
+      "Replay a recording (mink run --record) and check the state hash of every step; exit "
+      "code 6 names the first step that diverges.");
   command->add_option("file", options->file, "the recording")->required();
   command
       ->add_option("--threads", options->threads,

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -471,10 +470,9 @@ void World::set_mass_data(BodyId id, const MassData& mass) {
               ": mass and inertia must be finite and non-negative, the centre finite");
   if ((mass.mass > 0 && mass.mass < min_mass_property) ||
       (mass.rotational_inertia > 0 && mass.rotational_inertia < min_mass_property)) {
-    char numbers[160];
-    std::snprintf(numbers, sizeof numbers, "mass %.17g and rotational inertia %.17g", mass.mass,
-                  mass.rotational_inertia);
-    throw InvalidArgumentError("set_mass_data of " + to_string(id) + ": " + numbers +
+    throw InvalidArgumentError("set_mass_data of " + to_string(id) + ": mass " +
+                               detail::exact_number(mass.mass) + " and rotational inertia " +
+                               detail::exact_number(mass.rotational_inertia) +
                                " must each be 0 or at least min_mass_property (1e-30)");
   }
   WorldState& w = *state_;

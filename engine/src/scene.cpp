@@ -624,6 +624,10 @@ std::span<const std::string_view> builtin_scene_names() noexcept {
   return kSceneNames;
 }
 
+bool is_builtin_scene(std::string_view name) noexcept {
+  return std::find(kSceneNames.begin(), kSceneNames.end(), name) != kSceneNames.end();
+}
+
 SceneDef builtin_scene(std::string_view name) {
   if (name == "pyramid") return pyramid_scene(20);
   if (name == "pyramid_100") return pyramid_scene(100);

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -360,8 +361,9 @@ ShapeDef read_shape(const Json& value, const std::string& path) {
   }
   reader.finish();
   // Hull and check now, so a shape the engine would refuse is reported before anything runs.
+  std::optional<ShapeGeometry> polygon;
   try {
-    if (shape.type == ShapeType::polygon) (void)make_shape_hull(shape);
+    if (shape.type == ShapeType::polygon) polygon = detail::make_geometry(shape);
     check_shape_def(shape);
   } catch (const NonFiniteInputError& error) {
     throw SceneFileError(index_path(geometry_path, error.index()),
@@ -374,7 +376,8 @@ ShapeDef read_shape(const Json& value, const std::string& path) {
   // A density the solver could not invert the mass of is refused here, as create_shape would.
   if (shape.type != ShapeType::chain) {
     try {
-      detail::check_shape_mass(detail::make_geometry(shape), shape.density, "the shape");
+      detail::check_shape_mass(polygon ? *polygon : detail::make_geometry(shape), shape.density,
+                               "the shape");
     } catch (const Error& error) {
       throw SceneFileError(reader.child("density"), error.what());
     }
@@ -770,13 +773,11 @@ void save_scene_file(const std::filesystem::path& path, const SceneDef& scene) {
 }
 
 SceneDef resolve_scene(const std::string& name_or_path) {
-  const auto names = builtin_scene_names();
-  if (std::find(names.begin(), names.end(), name_or_path) != names.end()) {
-    return builtin_scene(name_or_path);
-  }
+  if (is_builtin_scene(name_or_path)) return builtin_scene(name_or_path);
   if (!std::filesystem::exists(name_or_path)) {
     std::string list;
-    for (const std::string_view n : names) list += (list.empty() ? "" : ", ") + std::string(n);
+    for (const std::string_view n : builtin_scene_names())
+      list += (list.empty() ? "" : ", ") + std::string(n);
     throw InvalidArgumentError("'" + name_or_path + "' is neither a built-in scene (" + list +
                                ") nor a scene file");
   }

@@ -5,10 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <string>
 
+#include "checks.hpp"
 #include "mink/error.hpp"
 #include "record_scope.hpp"
 #include "world_state.hpp"
@@ -181,11 +181,10 @@ void detail::check_shape_mass(const ShapeGeometry& geometry, Real density,
   if (density == 0) return;
   const MassData m = compute_mass(geometry, density);
   if (m.mass > 0 && (m.mass < min_mass_property || m.rotational_inertia < min_mass_property)) {
-    char numbers[160];
-    std::snprintf(numbers, sizeof numbers, "mass %.17g kg and rotational inertia %.17g kg m^2",
-                  m.mass, m.rotational_inertia);
-    throw InvalidArgumentError(what + ": density " + std::to_string(density) + " gives " + numbers +
-                               ", below min_mass_property (1e-30)");
+    throw InvalidArgumentError(what + ": density " + std::to_string(density) + " gives mass " +
+                               exact_number(m.mass) + " kg and rotational inertia " +
+                               exact_number(m.rotational_inertia) +
+                               " kg m^2, below min_mass_property (1e-30)");
   }
 }
 

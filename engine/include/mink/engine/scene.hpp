@@ -77,6 +77,8 @@ void shift_scene(SceneDef& scene, const Vec2& offset);
 /// paper, shapes, pendulum, chain, bridge, ragdolls, car, newtons_cradle), then Box2D v3's
 /// benchmark suite (see benchmark_suite).
 std::span<const std::string_view> builtin_scene_names() noexcept;
+/// @brief Whether `name` is one of builtin_scene_names().
+bool is_builtin_scene(std::string_view name) noexcept;
 /// @brief The built-in scene of that name (see builtin_scene_names).
 /// @throws InvalidArgumentError naming an unknown scene.
 SceneDef builtin_scene(std::string_view name);
