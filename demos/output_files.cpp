@@ -1,6 +1,10 @@
 #include "output_files.hpp"
 
+#include <fstream>
+#include <iterator>
 #include <string>
+
+#include "mink/error.hpp"
 
 namespace mink::cli {
 
@@ -14,6 +18,14 @@ void write_file_atomically(const std::filesystem::path& file, std::span<const st
   out.stream().write(reinterpret_cast<const char*>(bytes.data()),
                      static_cast<std::streamsize>(bytes.size()));
   out.commit();
+}
+
+std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& file,
+                                          std::string_view what) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in)
+    throw InvalidArgumentError("cannot read " + std::string(what) + " '" + file.string() + "'");
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace mink::cli

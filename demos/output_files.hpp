@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "mink/output_file.hpp"
 
@@ -22,5 +23,9 @@ void make_directories(const std::filesystem::path& directory, std::string_view w
 // Writes `bytes` to `file` through an OutputFile: whole or not at all.
 void write_file_atomically(const std::filesystem::path& file, std::span<const std::uint8_t> bytes,
                            std::string_view what);
+
+// What write_file_atomically wrote: the whole of `file`. Throws InvalidArgumentError naming
+// `what` and the file when it cannot be read.
+std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& file, std::string_view what);
 
 }  // namespace mink::cli

@@ -2,8 +2,6 @@
 
 #include <array>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <string>
 
 #include "mink/byte_stream.hpp"
@@ -43,10 +41,7 @@ void save_recording(const std::filesystem::path& file, const Recording& recordin
 }
 
 Recording load_recording(const std::filesystem::path& file) {
-  std::ifstream stream(file, std::ios::binary);
-  if (!stream) throw InvalidArgumentError("cannot read recording '" + file.string() + "'");
-  const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(stream),
-                                        std::istreambuf_iterator<char>()};
+  const std::vector<std::uint8_t> bytes = read_file_bytes(file, "recording");
   ByteReader in(bytes);
   std::array<char, 8> magic{};
   in.raw(magic.data(), magic.size());

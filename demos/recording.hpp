@@ -1,10 +1,10 @@
 #pragma once
 
-// Recordings (`mink run --record FILE`, `mink sandbox --record FILE`, `mink replay FILE`): the
-// world's snapshot when recording began, then, in order, every call that changed the world (the
-// scene's schedule, the sandbox's mouse and keys, an embedder's calls: whatever went through
-// World's recorder hook) and the state hash after every step. Replaying runs the calls on a
-// world restored from the snapshot and checks each step's hash.
+// Recordings (`mink run --record FILE`, `mink replay FILE`): the world's snapshot when recording
+// began, then, in order, every call that changed the world (the scene's schedule, the sandbox's
+// mouse and keys, an embedder's calls: whatever went through World's recorder hook) and the state
+// hash after every step. Replaying runs the calls on a world restored from the snapshot and checks
+// each step's hash.
 
 #include <cstdint>
 #include <filesystem>

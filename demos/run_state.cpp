@@ -2,8 +2,6 @@
 
 #include <array>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <span>
 #include <string>
 
@@ -22,12 +20,6 @@ constexpr std::size_t kStateHeader = 16;
 
 std::uint64_t text_hash(std::string_view text) {
   return hash_bytes({reinterpret_cast<const std::uint8_t*>(text.data()), text.size()});
-}
-
-std::vector<std::uint8_t> read_bytes(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InvalidArgumentError("cannot read '" + file.string() + "'");
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace
@@ -56,8 +48,8 @@ std::optional<std::vector<std::uint8_t>> find_saved_state(const std::filesystem:
   const std::filesystem::path state_file = state_file_for(file);
   std::error_code error;
   if (!std::filesystem::is_regular_file(state_file, error)) return std::nullopt;
-  const std::vector<std::uint8_t> text = read_bytes(file);
-  std::vector<std::uint8_t> state = read_bytes(state_file);
+  const std::vector<std::uint8_t> text = read_file_bytes(file, "scene file");
+  std::vector<std::uint8_t> state = read_file_bytes(state_file, "state file");
   if (state.size() < kStateHeader ||
       std::memcmp(state.data(), kStateMagic.data(), kStateMagic.size()) != 0) {
     throw SnapshotError("'" + state_file.string() + "' is not a state file (no MINKSTAT header)");

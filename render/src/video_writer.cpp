@@ -156,16 +156,9 @@ VideoWriter::VideoWriter(std::filesystem::path path, int width, int height, Vide
     arguments.insert(arguments.end(), {"-q:v", "3"});
   }
   try {
+    // ffmpeg writes the temporary file; close() renames it once ffmpeg has succeeded.
     output_ = std::make_unique<OutputFile>(path_, "video", false);
-  } catch (...) {
-    ::close(fds[0]);
-    ::close(fds[1]);
-    ::close(log_fd);
-    std::filesystem::remove(log_path_);
-    throw;
-  }
-  arguments.insert(arguments.end(), {"-pix_fmt", "yuv420p", output_->writing_path().string()});
-  try {
+    arguments.insert(arguments.end(), {"-pix_fmt", "yuv420p", output_->writing_path().string()});
     pid_ = spawn(arguments, fds[0], -1, log_fd);
   } catch (...) {
     ::close(fds[0]);
