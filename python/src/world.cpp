@@ -164,6 +164,11 @@ std::vector<Ref> refs(const WorldPtr& world, const std::vector<Id>& ids) {
 // ""), its worker count and its snapshot.
 constexpr int kPickleFormat = 1;
 
+py::bytes run_snapshot(WorldHandle& w) {
+  const std::vector<std::uint8_t> bytes = w.run().snapshot();
+  return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
+}
+
 void restore_run(WorldHandle& w, const py::bytes& snapshot) {
   const std::string_view bytes = snapshot;
   w.run().restore(std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()));
@@ -334,11 +339,7 @@ keyword arguments as BodyDef's properties (position, angle, linear_velocity, ...
           "profile", [](WorldHandle& w) { return profile_dict(w.world().profile()); },
           "Wall time of each phase of the last step, in milliseconds.")
       .def(
-          "snapshot",
-          [](WorldHandle& w) {
-            const std::vector<std::uint8_t> bytes = w.run().snapshot();
-            return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
-          },
+          "snapshot", [](WorldHandle& w) { return run_snapshot(w); },
           "The whole simulation state as bytes (World::snapshot, with a built-in scene's "
           "schedule): restore() rolls this world back to it exactly.")
       .def(
@@ -354,10 +355,8 @@ keyword arguments as BodyDef's properties (position, angle, linear_velocity, ...
           "have equal hashes.")
       .def(py::pickle(
           [](WorldHandle& w) {
-            const std::vector<std::uint8_t> bytes = w.run().snapshot();
-            return py::make_tuple(
-                kPickleFormat, w.schedule_scene(), w.world().def().worker_count,
-                py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+            return py::make_tuple(kPickleFormat, w.schedule_scene(), w.world().def().worker_count,
+                                  run_snapshot(w));
           },
           [](const py::tuple& state) { return unpickle_world(state); }))
       .def("__repr__", [](WorldHandle& w) {
