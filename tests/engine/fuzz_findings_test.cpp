@@ -17,28 +17,7 @@
 namespace mink {
 namespace {
 
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const InvalidArgumentError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
-bool all_finite(const World& world) {
-  for (const BodyId b : world.bodies()) {
-    const Vec2 p = world.position(b);
-    const Vec2 v = world.linear_velocity(b);
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(world.angle(b)) ||
-        !std::isfinite(v.x()) || !std::isfinite(v.y()) ||
-        !std::isfinite(world.angular_velocity(b))) {
-      return false;
-    }
-  }
-  return true;
-}
+using test::all_finite;
 
 // A spinning box given a rotational inertia of 4.9e-324 (the smallest double) had an infinite
 // inverse inertia in the solver: the next step made its state NaN, and the broadphase threw
@@ -50,12 +29,12 @@ TEST(FuzzFindings, SetMassDataRefusesInertiaTooSmallToInvert) {
   world.set_angular_velocity(box, -1.76);
   const MassData before = world.mass_data(box);
   const Real denormal = std::numeric_limits<Real>::denorm_min();
-  const std::string error = error_of([&] {
+  const std::string error = test::error_of<InvalidArgumentError>([&] {
     world.set_mass_data(box, MassData{1.5, Vec2(0, 0), denormal});
   });
   EXPECT_NE(error.find("set_mass_data"), std::string::npos) << error;
   EXPECT_NE(error.find("min_mass_property"), std::string::npos) << error;
-  EXPECT_NE(error_of([&] {
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
               world.set_mass_data(box, MassData{1e-40, Vec2(0, 0), 1});
             }),
             "no error");
@@ -91,13 +70,15 @@ TEST(FuzzFindings, ShapeMassTooSmallToInvertIsRefused) {
   const BodyId body = world.create_body(def);
   ShapeDef light = ShapeDef::box(0.5, 0.5);
   light.density = 1e-35;
-  const std::string error = error_of([&] { world.create_shape(body, light); });
+  const std::string error =
+      test::error_of<InvalidArgumentError>([&] { world.create_shape(body, light); });
   EXPECT_NE(error.find("create_shape"), std::string::npos) << error;
   EXPECT_NE(error.find("min_mass_property"), std::string::npos) << error;
   EXPECT_EQ(world.shape_count(), 0u);
 
   const ShapeId shape = world.create_shape(body, ShapeDef::box(0.5, 0.5));
-  EXPECT_NE(error_of([&] { world.set_shape_density(shape, 1e-35); }), "no error");
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] { world.set_shape_density(shape, 1e-35); }),
+            "no error");
   EXPECT_EQ(world.shape_density(shape), 1);
   EXPECT_EQ(world.mass(body), 1);
   // Density 0 stays allowed (a massless shape), and so does a light but invertible one.

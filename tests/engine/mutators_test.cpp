@@ -14,15 +14,7 @@
 namespace mink {
 namespace {
 
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::error_of;
 
 TEST(Mutators, BodyTypeChangesMassAndMotion) {
   World world;

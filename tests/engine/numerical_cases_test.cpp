@@ -23,12 +23,7 @@ using namespace mink;
 using mink::test::add_ground;
 using mink::test::finite_state;
 
-bool all_finite(const World& world) {
-  for (const BodyId id : world.bodies()) {
-    if (!finite_state(world, id)) return false;
-  }
-  return true;
-}
+using mink::test::all_finite;
 
 BodyId add_box_body(World& world, const Vec2& position, Real hx, Real hy, Real density = 1) {
   BodyDef def;

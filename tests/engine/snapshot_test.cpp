@@ -271,13 +271,8 @@ TEST(Snapshot, FlippedBitsAreRefusedAndLeaveTheWorldAsItWas) {
 TEST(Snapshot, ErrorsNameWhatIsWrong) {
   World world = small_world();
   const std::vector<std::uint8_t> snapshot = world.snapshot();
-  const auto message = [&](std::vector<std::uint8_t> bytes) {
-    try {
-      world.restore(bytes);
-    } catch (const SnapshotError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
+  const auto message = [&](const std::vector<std::uint8_t>& bytes) {
+    return test::error_of<SnapshotError>([&] { world.restore(bytes); });
   };
   std::vector<std::uint8_t> bytes = snapshot;
   bytes[0] = 'X';

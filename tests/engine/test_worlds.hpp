@@ -4,12 +4,14 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 #include "mink/engine/scene.hpp"
 #include "mink/engine/world.hpp"
+#include "mink/error.hpp"
 
 namespace mink::test {
 
@@ -119,6 +121,24 @@ inline bool finite_state(const World& world, BodyId id) {
   const Vec2 p = world.position(id), v = world.linear_velocity(id);
   return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(world.angle(id)) &&
          std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(world.angular_velocity(id));
+}
+
+inline bool all_finite(const World& world) {
+  for (const BodyId id : world.bodies()) {
+    if (!finite_state(world, id)) return false;
+  }
+  return true;
+}
+
+// The message of the `Expected` error `f` throws, or "no error".
+template <typename Expected = Error, typename F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const Expected& e) {
+    return e.what();
+  }
+  return "no error";
 }
 
 // A pyramid of `base` boxes, sleeping off, built twice: as is and with `change` applied to
