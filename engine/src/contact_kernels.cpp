@@ -145,8 +145,12 @@ void solve_one(SolverBody* bodies, ContactConstraint& c, SolverReal inv_h, Solve
     p.max_normal_impulse = smax(p.max_normal_impulse, impulse);
     apply(p, impulse * nx, impulse * ny);
   }
+  // Friction in the relax pass only. Solved in the biased pass as well, it also answered the
+  // push-out's sideways share and fought each substep's normal correction, and the light boxes
+  // near a stiff stack's top walked: a 40-row pyramid's top box crept 0.6 m sideways in 500
+  // steps at 60 Hz contacts. Against velocities rid of the bias it holds them (2 cm).
   const SolverReal tx = ny, ty = -nx;
-  for (int j = 0; j < 2; ++j) {
+  for (int j = 0; j < 2 && !use_bias; ++j) {
     ContactConstraintPoint& p = c.points[j];
     const SolverReal dvx = (vbx - wb * p.by) - (vax - wa * p.ay);
     const SolverReal dvy = (vby + wb * p.bx) - (vay + wa * p.ax);

@@ -175,8 +175,9 @@ __attribute__((always_inline)) inline void solve_wide_impl(
       }
       apply(p, bx, by, impulse * nx, impulse * ny);
     }
+    // Friction in the relax pass only, as in the scalar kernel (see there).
     const Wide tx = ny, ty = -nx;
-    for (int j = 0; j < 2; ++j) {
+    for (int j = 0; j < 2 && !use_bias; ++j) {
       WideConstraint::Point& p = c->points[j];
       const Wide bx = bxs[j], by = bys[j];
       const Wide dvx = (b.vx - b.w * by) - (a.vx - a.w * p.ay);

@@ -8,6 +8,7 @@
 //   per substep: integrate velocities, warm start with the accumulated impulses, one
 //   Gauss-Seidel pass with the soft bias ("solve"), integrate positions, one pass without the
 //   bias ("relax", so the push-out does not turn into bounce); restitution once at the end.
+//   Friction is solved in the relax pass only, against velocities free of the push-out.
 // Substeps give most of the benefit of smaller time steps (stiffness, stacking) at the price
 // of one iteration each, and the contact separation is updated each substep from the bodies'
 // position change without recomputing manifolds. Contacts with a body that does not move get

@@ -71,10 +71,11 @@ void expect_same_far_away(const std::string& name, const SceneDef& scene, int ma
   const Real near = largest_difference(worlds[1], offsets[1], worlds[0]);
   const Real far = largest_difference(worlds[2], offsets[2], worlds[0]);
   // A settling stack amplifies a last-bit change in position: 10^7 m out a position's last bit
-  // is 1.9e-9 m, a thousand times what it is at 10^3 m, and a 40-row pyramid (the sanitized
-  // builds' size) carries that to a few micrometres while one shifted 10^3 m stays within 1e-8.
-  // The far run may differ from the origin's by twice what the near one does, or by 10 um.
-  EXPECT_LE(far, 2 * near + 1e-5) << name;
+  // is 1.9e-9 m, a thousand times what it is at 10^3 m, and the settled bodies carry that to
+  // anything up to a millimetre or so, as the near copy shows they already do at 10^3 m. The
+  // far run may differ from the origin's by twice what the near one does, or by the linear
+  // slop (the depth to which the contacts themselves let bodies rest into each other).
+  EXPECT_LE(far, std::max(2 * near, worlds[0].def().linear_slop)) << name;
   std::cout << name << ": asleep after " << sleep_steps[0] << " steps at the origin, "
             << sleep_steps[1] << " at (1e3, 1e3), " << sleep_steps[2]
             << " at (1e7, 1e7); largest position difference from the origin's run " << near
