@@ -370,10 +370,10 @@ int replay_file(const ReplayOptions& options, Streams streams) {
 
 Action add_replay_command(CLI::App& app, Streams streams) {
   auto options = std::make_shared<ReplayOptions>();
-  CLI::App* command = app.add_subcommand(
-      "replay",
-      "Replay a recording (mink run --record) and check the state hash of every step; exit "
-      "code 6 names the first step that diverges.");
+  CLI::App* command = app.add_subcommand("replay",
+                                         "Replay a recording (mink run or mink sandbox --record) "
+                                         "and check the state hash of every step; exit "
+                                         "code 6 names the first step that diverges.");
   command->add_option("file", options->file, "the recording")->required();
   command
       ->add_option("--threads", options->threads,

@@ -83,21 +83,55 @@ Sandbox::Sandbox(Renderer& renderer, const std::string& scene)
     : Sandbox(renderer, scene, resolve_scene(scene)) {}
 
 Sandbox::Sandbox(Renderer& renderer, std::string name, SceneDef scene)
-    : renderer_(renderer), scene_(std::move(name)), scene_def_(std::move(scene)), run_(scene_def_) {
+    : renderer_(renderer),
+      scene_(std::move(name)),
+      scene_def_(std::move(scene)),
+      run_(scene_def_),
+      start_(run_.snapshot()) {
   renderer_.layers = draw_shapes | draw_contact_points | draw_joints;
-  reset();
+  forget_ids();
+  fit_camera();
+}
+
+Sandbox::~Sandbox() = default;
+
+void Sandbox::record_to(std::filesystem::path file) {
+  finish_recording();
+  record_file_ = std::move(file);
+  recorder_ = std::make_unique<RunRecorder>(run_.world());
+}
+
+std::optional<std::size_t> Sandbox::finish_recording() {
+  if (!recorder_) return std::nullopt;
+  const std::unique_ptr<RunRecorder> recorder = std::move(recorder_);
+  save_recording(record_file_, recorder->recording());
+  return recorder->steps();
 }
 
 void Sandbox::reset() {
+  // Rolled back rather than rebuilt, so the world (and a recording of it) goes on.
+  run_.restore(start_);
+  forget_ids();
+  fit_camera();
+}
+
+void Sandbox::load_scene() {
+  const bool recorded = finish_recording().has_value();
   run_ = SceneRun(scene_def_);
-  // The old world's ids mean nothing in the new one.
+  start_ = run_.snapshot();
+  forget_ids();
+  fit_camera();
+  if (recorded) joint_message_ = "recording written to " + record_file_.string();
+}
+
+void Sandbox::forget_ids() {
+  // What was made after the start means nothing now.
   world_anchor_.reset();
   drag_.reset();
   joint_first_.reset();
   joint_message_.clear();
   drops_ = 0;
   history_.clear();
-  fit_camera();
 }
 
 void Sandbox::step_back() {
@@ -110,6 +144,10 @@ void Sandbox::step_back() {
   }
   // Kept, not dropped: stepping on from it keeps new moments after it.
   run_.restore(history_.back().snapshot);
+  // A drag under way when that moment was kept has ended since: its motor joint goes, or it
+  // would hold the body at that moment's cursor.
+  const std::optional<JointId> kept_drag = history_.back().drag_joint;
+  if (kept_drag && run_.world().is_valid(*kept_drag)) run_.world().destroy_joint(*kept_drag);
   // Ids of what was made after that moment are stale now.
   if (world_anchor_ && !run_.world().is_valid(*world_anchor_)) world_anchor_.reset();
   if (joint_first_ && !run_.world().is_valid(*joint_first_)) joint_first_.reset();
@@ -157,7 +195,7 @@ void Sandbox::key(std::string_view name) {
     const auto at = std::find(names.begin(), names.end(), scene_);
     scene_ = std::string(at == names.end() || at + 1 == names.end() ? names.front() : *(at + 1));
     scene_def_ = builtin_scene(scene_);
-    reset();
+    load_scene();
   } else if (k == "j") {
     release();
     joint_mode_ = !joint_mode_;
@@ -289,7 +327,7 @@ void Sandbox::step() {
   run_.step();
   const std::uint64_t now = run_.world().step_count();
   if (now % kKeepEvery == 0) {
-    history_.push_back({now, run_.snapshot()});
+    history_.push_back({now, run_.snapshot(), drag_ ? std::optional(drag_->joint) : std::nullopt});
     if (history_.size() > kKeptCount) history_.pop_front();
   }
 }

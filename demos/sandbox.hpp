@@ -2,6 +2,8 @@
 
 #include <cstdint>
 #include <deque>
+#include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -11,6 +13,7 @@
 #include "mink/engine/scene_schedule.hpp"
 #include "mink/engine/world.hpp"
 #include "mink/render/renderer.hpp"
+#include "recording.hpp"
 
 namespace mink::cli {
 
@@ -27,6 +30,10 @@ namespace mink::cli {
 // pins the two with a revolute joint at that second click point. b steps back in time: the
 // world (and the scene's schedule) as it was at the last kept moment, one kept every half
 // second for the last ten seconds; pressed again, further back.
+//
+// A reset rolls the world back to the scene as built (World::restore), so a recording
+// (record_to) goes on through resets; a switch to another scene ends it, as a recording holds
+// one world.
 class Sandbox {
  public:
   // `scene` is a built-in's name or a scene file, as for `mink run`; throws
@@ -34,6 +41,18 @@ class Sandbox {
   Sandbox(Renderer& renderer, const std::string& scene);
   // The scene already resolved (so a bad one fails before any window opens); `name` is shown.
   Sandbox(Renderer& renderer, std::string name, SceneDef scene);
+  ~Sandbox();
+  Sandbox(const Sandbox&) = delete;
+  Sandbox& operator=(const Sandbox&) = delete;
+
+  // Records the run from now on (mink replay's format): the world's state now, then every
+  // call the sandbox, the scene's schedule and the person's input make and every step's state
+  // hash. finish_recording() writes it to `file`, as does a switch to another scene.
+  void record_to(std::filesystem::path file);
+  // Writes the recording being made to its file and ends it; returns its steps, or nothing
+  // when none was being made. Throws OutputError when the file cannot be written.
+  std::optional<std::size_t> finish_recording();
+  bool recording() const { return recorder_ != nullptr; }
 
   void key(std::string_view name);
   void mouse_down(const Vec2& pixel);
@@ -62,6 +81,8 @@ class Sandbox {
 
  private:
   void reset();
+  void load_scene();
+  void forget_ids();
   void fit_camera();
   void step();
   void drop_hull(const Vec2& world_point);
@@ -73,8 +94,11 @@ class Sandbox {
 
   Renderer& renderer_;
   std::string scene_;
-  SceneDef scene_def_;  // what reset rebuilds, so a scene file is read once
-  SceneRun run_;        // the world, stepped with the scene's schedule
+  SceneDef scene_def_;               // what reset rebuilds, so a scene file is read once
+  SceneRun run_;                     // the world, stepped with the scene's schedule
+  std::vector<std::uint8_t> start_;  // the run's snapshot as built: what a reset restores
+  std::unique_ptr<RunRecorder> recorder_;
+  std::filesystem::path record_file_;
   bool paused_ = false;
   bool step_once_ = false;
   bool quit_ = false;
@@ -93,6 +117,7 @@ class Sandbox {
   struct Kept {
     std::uint64_t step;
     std::vector<std::uint8_t> snapshot;
+    std::optional<JointId> drag_joint;  // the drag's motor joint, if one was under way
   };
   std::deque<Kept> history_;
   static constexpr std::uint64_t kKeepEvery = 30;  // steps: half a second

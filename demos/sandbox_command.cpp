@@ -28,6 +28,7 @@ struct SandboxOptions {
   std::string script;
   std::string screenshot;
   std::string size = "1280x720";
+  std::string record;
 };
 
 void handle(Sandbox& sandbox, const SDL_Event& event) {
@@ -70,6 +71,7 @@ int run_sandbox(const SandboxOptions& options, Streams streams) {
   SdlWindow window("mink sandbox", width, height, player ? false : true);
   Renderer renderer(window);
   Sandbox sandbox(renderer, options.scene, std::move(scene));
+  if (!options.record.empty()) sandbox.record_to(options.record);
   // A scripted run's clock is the frame count at 60 frames a second, so it does the same
   // thing however fast the machine draws.
   Uint64 next_frame_ms = SDL_GetTicks64();
@@ -102,6 +104,9 @@ int run_sandbox(const SandboxOptions& options, Streams streams) {
       next_frame_ms = std::max(now, next_frame_ms) + 16;
     }
   }
+  if (const std::optional<std::size_t> steps = sandbox.finish_recording()) {
+    streams.out << "recorded: " << options.record << " (" << *steps << " steps)\n";
+  }
   return kSuccess;
 }
 
@@ -121,6 +126,10 @@ Action add_sandbox_command(CLI::App& app, Streams streams) {
                       "at 60 frames a second)");
   command->add_option("--screenshot", options->screenshot, "PNG file for screenshot events");
   command->add_option("--size", options->size, "window size WIDTHxHEIGHT (default 1280x720)");
+  command->add_option("--record", options->record,
+                      "record the run for mink replay (the initial state, every call the "
+                      "sandbox and your input make, each step's state hash); a reset is "
+                      "recorded, a switch to another scene ends the recording");
   return [options, streams] { return run_sandbox(*options, streams); };
 }
 

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <optional>
 
 #include "cli_test_support.hpp"
 #include "mink/engine/scene_file.hpp"
@@ -322,3 +324,87 @@ TEST(Sandbox, UnknownSceneIsNamed) {
 }
 
 }  // namespace
+
+// A recorded sandbox session replays with equal state hashes at 1 and 2 workers: rain_mixed
+// with a body dragged, a hull dropped, a revolute joint pinned in joint mode, a step back in
+// time and a reset, all recorded through the world's recorder hook and written by
+// finish_recording. A switch to another scene ends a recording and writes it.
+TEST(Sandbox, ARecordedSessionReplaysWithEqualHashes) {
+  const auto dir = mink_test::fresh_dir("sandbox_recording");
+  const auto file = dir / "session.rec";
+  Headless frame(mink::GlBackend::osmesa, 480, 360);
+  Sandbox sandbox(*frame.renderer, "rain_mixed");
+  sandbox.record_to(file);
+  EXPECT_TRUE(sandbox.recording());
+  const mink::Camera& camera = frame.renderer->camera();
+  std::size_t steps = 0;
+  const auto frames = [&](int count) {
+    for (int i = 0; i < count; ++i) sandbox.frame();
+    steps += static_cast<std::size_t>(count);
+  };
+  const auto lowest_dynamic = [&] {
+    mink::BodyId found{};
+    mink::Real lowest = 1e300;
+    for (const mink::BodyId body : sandbox.world().bodies()) {
+      if (sandbox.world().body_type(body) != mink::BodyType::dynamic) continue;
+      if (sandbox.world().position(body).y() < lowest) {
+        lowest = sandbox.world().position(body).y();
+        found = body;
+      }
+    }
+    return found;
+  };
+  frames(40);
+  const Vec2 grabbed = sandbox.world().world_center(lowest_dynamic());
+  sandbox.mouse_down(camera.world_to_pixel(grabbed));
+  ASSERT_TRUE(sandbox.dragged());
+  sandbox.mouse_move(camera.world_to_pixel(grabbed + Vec2(1, 2)));
+  frames(20);
+  sandbox.mouse_up(camera.world_to_pixel(grabbed + Vec2(1, 2)));
+  sandbox.mouse_down(Vec2(240.5, 30.5));  // high above the floor: a dropped hull
+  sandbox.mouse_up(Vec2(240.5, 30.5));
+  frames(15);
+  const std::size_t joints_before = sandbox.world().joint_count();
+  sandbox.key("j");
+  const Vec2 pin = sandbox.world().world_center(lowest_dynamic());
+  sandbox.mouse_down(camera.world_to_pixel(pin + Vec2(0, 20)));  // empty space: the world
+  sandbox.mouse_up(camera.world_to_pixel(pin + Vec2(0, 20)));
+  sandbox.mouse_down(camera.world_to_pixel(pin));
+  sandbox.mouse_up(camera.world_to_pixel(pin));
+  sandbox.key("j");
+  EXPECT_EQ(sandbox.world().joint_count(), joints_before + 1) << "no joint pinned";
+  frames(10);
+  sandbox.key("b");  // back to step 60, before the joint
+  EXPECT_EQ(sandbox.world().step_count(), 60u);
+  EXPECT_EQ(sandbox.world().joint_count(), joints_before);
+  frames(25);
+  sandbox.key("r");
+  EXPECT_EQ(sandbox.world().step_count(), 0u);
+  frames(30);
+  const std::uint64_t final_hash = sandbox.world().state_hash();
+  const std::optional<std::size_t> recorded = sandbox.finish_recording();
+  ASSERT_TRUE(recorded);
+  EXPECT_EQ(*recorded, steps);
+  EXPECT_FALSE(sandbox.recording());
+
+  const mink::cli::Recording recording = mink::cli::load_recording(file);
+  for (const int workers : {1, 2}) {
+    const mink::cli::ReplayResult result = mink::cli::replay(recording, workers);
+    EXPECT_FALSE(result.diverged_at)
+        << workers << " workers: diverged at step " << result.diverged_at.value_or(0);
+    EXPECT_EQ(result.steps, steps) << workers << " workers";
+  }
+  // The recording's last step is the session's last state.
+  ASSERT_FALSE(recording.entries.empty());
+  EXPECT_TRUE(recording.entries.back().is_step);
+  EXPECT_EQ(recording.entries.back().hash, final_hash);
+
+  // A recording holds one world: the next scene ends it, and it is written then.
+  const auto second = dir / "until_switch.rec";
+  sandbox.record_to(second);
+  frames(5);
+  sandbox.key("n");
+  EXPECT_FALSE(sandbox.recording());
+  EXPECT_FALSE(sandbox.finish_recording());
+  EXPECT_EQ(mink::cli::replay(mink::cli::load_recording(second), 1).steps, 5u);
+}
