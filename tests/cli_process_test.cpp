@@ -27,6 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using mink::Vec2;
+using mink_test::same_bits;
 
 struct ProcessResult {
   int exit_code = -1;
@@ -88,26 +89,6 @@ std::vector<Vec2> parse_hull_output(const std::string& text) {
     points.push_back({x, y});
   }
   return points;
-}
-
-::testing::AssertionResult same_bits(const std::vector<Vec2>& expected,
-                                     const std::vector<Vec2>& actual) {
-  const auto bits = [](double value) { return std::bit_cast<std::uint64_t>(value); };
-  if (expected.size() != actual.size()) {
-    return ::testing::AssertionFailure()
-           << "expected " << expected.size() << " vertices, got " << actual.size()
-           << "\n  expected " << mink_test::format_points(expected) << "\n  got      "
-           << mink_test::format_points(actual);
-  }
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    if (bits(expected[i].x()) != bits(actual[i].x()) ||
-        bits(expected[i].y()) != bits(actual[i].y())) {
-      return ::testing::AssertionFailure()
-             << "vertex " << i << ": expected " << mink_test::format_point(expected[i]) << ", got "
-             << mink_test::format_point(actual[i]);
-    }
-  }
-  return ::testing::AssertionSuccess();
 }
 
 // Runs the real binary on files it has never seen: a fresh directory and a fresh seed per

@@ -24,6 +24,7 @@
 namespace {
 
 using mink::Vec2;
+using mink_test::same_bits;
 
 struct CliRun {
   int exit_code = -1;
@@ -78,25 +79,6 @@ std::vector<Vec2> parse_output(const std::string& text) {
     points.push_back({x, y});
   }
   return points;
-}
-
-// Bit-for-bit equality: the output must round-trip every double exactly, signed zeros too.
-::testing::AssertionResult same_bits(const std::vector<Vec2>& expected,
-                                     const std::vector<Vec2>& actual) {
-  const auto bits = [](double value) { return std::bit_cast<std::uint64_t>(value); };
-  if (expected.size() != actual.size()) {
-    return ::testing::AssertionFailure()
-           << "expected " << expected.size() << " vertices, got " << actual.size();
-  }
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    if (bits(expected[i].x()) != bits(actual[i].x()) ||
-        bits(expected[i].y()) != bits(actual[i].y())) {
-      return ::testing::AssertionFailure()
-             << "vertex " << i << ": expected " << mink_test::format_point(expected[i]) << ", got "
-             << mink_test::format_point(actual[i]);
-    }
-  }
-  return ::testing::AssertionSuccess();
 }
 
 bool contains(const std::string& text, const std::string& part) {

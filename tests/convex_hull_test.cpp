@@ -15,13 +15,9 @@ namespace {
 
 using mink::Vec2;
 using mink_test::format_points;
+using mink_test::rotated_start;
 
 const std::vector<Vec2> kSquare = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
-
-std::vector<Vec2> rotated_start(std::vector<Vec2> ring, std::size_t start) {
-  std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(start), ring.end());
-  return ring;
-}
 
 std::vector<Vec2> regular_polygon(int sides) {
   std::vector<Vec2> ring;

@@ -17,6 +17,7 @@ namespace {
 using mink::Vec2;
 using mink_test::format_points;
 using mink_test::Kernel;
+using mink_test::rotated_start;
 
 std::vector<Vec2> regular_polygon(int sides, double radius, const Vec2& centre) {
   std::vector<Vec2> vertices;
@@ -51,11 +52,6 @@ Vec2 cgal_convex_centroid(const std::vector<Vec2>& polygon) {
   }
   return mink_test::from_cgal(
       CGAL::centroid(fan.begin(), fan.end(), Kernel(), CGAL::Dimension_tag<2>()));
-}
-
-std::vector<Vec2> rotated_start(std::vector<Vec2> polygon, std::size_t start) {
-  std::rotate(polygon.begin(), polygon.begin() + static_cast<std::ptrdiff_t>(start), polygon.end());
-  return polygon;
 }
 
 TEST(Polygon, UnitSquare) {

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <iterator>
@@ -55,6 +57,33 @@ inline std::string format_points(std::span<const mink::Vec2> points, std::size_t
   }
   if (points.size() > limit) text += ", ... (" + std::to_string(points.size()) + " in all)";
   return text + "]";
+}
+
+// The ring starting at its vertex `start` (the same polygon, another first vertex).
+inline std::vector<mink::Vec2> rotated_start(std::vector<mink::Vec2> ring, std::size_t start) {
+  std::rotate(ring.begin(), ring.begin() + static_cast<std::ptrdiff_t>(start), ring.end());
+  return ring;
+}
+
+// Bit-for-bit equality: output must round-trip every double exactly, signed zeros too.
+inline ::testing::AssertionResult same_bits(const std::vector<mink::Vec2>& expected,
+                                            const std::vector<mink::Vec2>& actual) {
+  const auto bits = [](double value) { return std::bit_cast<std::uint64_t>(value); };
+  if (expected.size() != actual.size()) {
+    return ::testing::AssertionFailure()
+           << "expected " << expected.size() << " vertices, got " << actual.size()
+           << "\n  expected " << format_points(expected) << "\n  got      "
+           << format_points(actual);
+  }
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    if (bits(expected[i].x()) != bits(actual[i].x()) ||
+        bits(expected[i].y()) != bits(actual[i].y())) {
+      return ::testing::AssertionFailure()
+             << "vertex " << i << ": expected " << format_point(expected[i]) << ", got "
+             << format_point(actual[i]);
+    }
+  }
+  return ::testing::AssertionSuccess();
 }
 
 // mink's canonical hull form: the CCW ring rotated to start at its lowest (x, y) vertex.

@@ -167,9 +167,8 @@ void ContactSolver::impulses(std::uint32_t index, Real normal[2], Real tangent[2
   }
 }
 
-namespace {
-
-// What one stage of a substep does; the colour stages carry their colour.
+// What one stage of a substep does; the colour stages carry their colour. Not in an anonymous
+// namespace: ContactSolver::Stage, a member of a class with linkage, holds one.
 enum class StageKind : std::uint8_t {
   integrate_velocities,
   joint_warm_start,
@@ -182,8 +181,6 @@ enum class StageKind : std::uint8_t {
   joint_relax,
   relax,
 };
-
-}  // namespace
 
 // Every substep is the same list of stages; stage s of the run is stage s % per-substep of it.
 struct ContactSolver::Stage {

@@ -18,15 +18,9 @@
 namespace mink {
 namespace {
 
-constexpr Real kGravity = 10;
+using test::free_world;
+using test::kGravity;
 constexpr Real kPi = std::numbers::pi;
-
-WorldDef free_world(bool gravity = true) {
-  WorldDef def;
-  def.enable_sleep = false;
-  if (!gravity) def.gravity = Vec2(0, 0);
-  return def;
-}
 
 using test::add_ball;
 

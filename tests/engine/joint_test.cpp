@@ -19,7 +19,7 @@
 namespace mink {
 namespace {
 
-constexpr Real kGravity = 10;
+using test::kGravity;
 
 using test::add_ball;
 using test::free_world;

@@ -289,7 +289,7 @@ TEST(Snapshot, ErrorsNameWhatIsWrong) {
   // Bytes that pass the checksum but do not describe a state: a body's contact list that runs
   // past the end.
   bytes = snapshot;
-  bytes.resize(bytes.size() - 3);
+  bytes.erase(bytes.end() - 3, bytes.end());
   std::uint64_t size = bytes.size() - 36;
   std::memcpy(bytes.data() + 20, &size, 8);
   const std::uint64_t checksum = hash_bytes(std::span<const std::uint8_t>(bytes).subspan(36));

@@ -71,9 +71,14 @@ inline std::vector<Start> dynamic_bodies(const World& world) {
 }
 
 // Default settings with sleeping off, so nothing stops moving under a test's feet.
-inline WorldDef free_world() {
+// The magnitude of WorldDef's default gravity, (0, -10).
+inline constexpr Real kGravity = 10;
+
+// Sleep off, so bodies at rest keep being solved; without gravity when asked.
+inline WorldDef free_world(bool gravity = true) {
   WorldDef def;
   def.enable_sleep = false;
+  if (!gravity) def.gravity = Vec2(0, 0);
   return def;
 }
 
