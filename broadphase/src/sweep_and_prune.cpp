@@ -478,6 +478,9 @@ void SweepAndPrune::rebuild() {
   appended_.clear();
   dead_count_ = 0;
   clamped_count_ = 0;
+  // Every slot is set again below; those of proxies destroyed since the last update would
+  // otherwise keep pointing into the old arrays (and a snapshot of them would not load).
+  std::fill(slot_.begin(), slot_.end(), kNoSlot);
 
   std::vector<ProxyId> ids;
   ids.reserve(store_.count());
@@ -490,7 +493,10 @@ void SweepAndPrune::rebuild() {
     high = high.cwiseMax(store_.fat(id).lower);
   }
   const std::size_t n = ids.size();
-  if (n == 0) return;
+  if (n == 0) {
+    find_band_starts();  // every band empty
+    return;
+  }
 
   // Sweep along the axis of larger spread; cut the other one into bands.
   const Vec2 spread = high - low;
@@ -659,10 +665,14 @@ void SweepAndPrune::fields(Archive& archive) {
         if (e.id >= ids) archive.in.fail("a broadphase entry of an unknown proxy");
       }
     }
-    for (const std::uint32_t s : slot_) {
+    for (std::size_t id = 0; id < slot_.size(); ++id) {
+      const std::uint32_t s = slot_[id];
       const std::size_t bound = (s & kOversizedBit) != 0 ? oversized_.size() : entries_.size();
       if (s != kNoSlot && (s & ~kOversizedBit) >= bound) {
-        archive.in.fail("a broadphase slot beyond its array");
+        archive.in.fail("a broadphase slot beyond its array: proxy " + std::to_string(id) + " at " +
+                        std::to_string(s & ~kOversizedBit) + " of " + std::to_string(bound) +
+                        ((s & kOversizedBit) != 0 ? " oversized entries" : " entries") +
+                        ", touched " + std::to_string(touched_[id]));
       }
     }
     for (const std::uint32_t b : band_begin_) {

@@ -49,8 +49,17 @@ class DefCheck {
   }
   template <typename Def>
   void anchors(const Def& d) const {
-    finite_point(d.local_anchor_a, "local_anchor_a");
-    finite_point(d.local_anchor_b, "local_anchor_b");
+    within_reach(d.local_anchor_a, "local_anchor_a");
+    within_reach(d.local_anchor_b, "local_anchor_b");
+  }
+  // The solver works in single precision: a lever arm beyond max_joint_reach would overflow
+  // its squared terms (an anchor 2e17 m from its body turned a chain NaN in one step).
+  void within_reach(const Vec2& v, const char* field) const {
+    finite_point(v, field);
+    require(v.norm() <= max_joint_reach,
+            what_ + "." + field + " must lie within " + detail::exact_number(max_joint_reach) +
+                " m of its body's origin, got (" + detail::exact_number(v.x()) + ", " +
+                detail::exact_number(v.y()) + ")");
   }
   void motor(const JointMotor& m) const {
     finite_value(m.speed, "motor.speed");

@@ -3,6 +3,7 @@
 // and the state's hash for desync checks (World::state_hash).
 
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -108,12 +109,55 @@ void check_indices(const WorldState& w, ByteReader& in) {
   const auto color_ok = [](std::uint8_t c) {
     return c <= detail::kOverflowColor || c == detail::kNoColor;
   };
-  for (const detail::Body& b : w.bodies) {
+  for (std::size_t i = 0; i < bodies; ++i) {
+    const detail::Body& b = w.bodies[i];
+    // A state the API could never have made: the first step would turn it into NaN.
+    const Real values[] = {b.center.x(),
+                           b.center.y(),
+                           b.rotation.cos,
+                           b.rotation.sin,
+                           b.origin.x(),
+                           b.origin.y(),
+                           b.velocity.x(),
+                           b.velocity.y(),
+                           b.angular_velocity,
+                           b.inv_mass,
+                           b.inv_inertia,
+                           b.extent,
+                           b.min_extent,
+                           b.continuous_threshold,
+                           b.local_center.x(),
+                           b.local_center.y(),
+                           b.force.x(),
+                           b.force.y(),
+                           b.torque,
+                           b.mass,
+                           b.inertia,
+                           b.linear_damping,
+                           b.angular_damping,
+                           b.gravity_scale,
+                           b.sleep_time,
+                           b.previous_origin.x(),
+                           b.previous_origin.y(),
+                           b.previous_rotation.cos,
+                           b.previous_rotation.sin};
+    for (const Real v : values) {
+      if (b.alive && !std::isfinite(v)) in.fail("body " + std::to_string(i) + " is not finite");
+    }
     for (const std::uint32_t s : b.shapes) below(s, shapes, "a body's shape");
     for (const std::uint32_t c : b.contacts) below(c, contacts, "a body's contact");
     for (const std::uint32_t j : b.joints) below(j, joints, "a body's joint");
   }
-  for (const detail::Shape& s : w.shapes) below(s.body, bodies, "a shape's body");
+  for (std::size_t i = 0; i < shapes; ++i) {
+    const detail::Shape& s = w.shapes[i];
+    below(s.body, bodies, "a shape's body");
+    // A live shape's proxy, if it has one, is a live proxy that names it back.
+    if (s.alive && s.proxy != null_proxy &&
+        (!w.broadphase.is_proxy(s.proxy) || w.broadphase.user_data(s.proxy) != i)) {
+      in.fail("shape " + std::to_string(i) + "'s broadphase proxy " + std::to_string(s.proxy) +
+              " is not one of its own");
+    }
+  }
   for (const detail::Contact& c : w.contacts) {
     below(c.body_a, bodies, "a contact's body");
     below(c.body_b, bodies, "a contact's body");

@@ -162,5 +162,34 @@ TEST(FuzzFindings, AChainLinkPinnedTwiceStaysFinite) {
   EXPECT_LT((world.position(first) - start).norm(), 0.01);
 }
 
+// The same chain with one link moved to x = 2.2e17 m: its pins' anchors lay 2.2e17 m from its
+// origin, and the single-precision solver's squared lever arms overflowed, turning the chain NaN
+// in one step (a query then threw from inside step()). Such an anchor is now refused when the
+// joint is made, and the scene reader refuses the scene, naming the joint.
+TEST(FuzzFindings, AJointAnchorBeyondItsReachIsRefused) {
+  World world;
+  const BodyId ground = world.create_body({});
+  const BodyId far = test::add_box(world, {2.2e17, 17});
+  const std::string error = test::error_of<InvalidArgumentError>(
+      [&] { world.create_joint(revolute_joint_at(world, ground, far, Vec2(2.5, 17.5))); });
+  EXPECT_NE(error.find("local_anchor_b"), std::string::npos) << error;
+  EXPECT_NE(error.find("1000000"), std::string::npos) << error;
+  EXPECT_EQ(world.joint_count(), 0u);
+  // Within reach, the same joint is made.
+  const BodyId near = test::add_box(world, {2.2e5, 17});
+  world.create_joint(revolute_joint_at(world, ground, near, Vec2(2.5, 17.5)));
+  EXPECT_EQ(world.joint_count(), 1u);
+
+  const std::string scene = R"({"format": "minkowski-scene", "version": 1, "bodies": [
+      {"type": "static", "position": [0, 20], "shapes": []},
+      {"type": "dynamic", "position": [216516504294495533, 17], "shapes": [{"circle":
+      {"radius": 0.25}}]}], "joints": [{"type": "revolute", "body_a": 0, "body_b": 1,
+      "anchor": [2.5, 17.5]}]})";
+  const std::string scene_error =
+      test::error_of<SceneFileError>([&] { (void)parse_scene_json(scene); });
+  EXPECT_NE(scene_error.find("joints[0]"), std::string::npos) << scene_error;
+  EXPECT_NE(scene_error.find("local_anchor_b"), std::string::npos) << scene_error;
+}
+
 }  // namespace
 }  // namespace mink

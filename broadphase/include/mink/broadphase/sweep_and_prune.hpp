@@ -38,6 +38,8 @@ class SweepAndPrune final : public Broadphase {
   const Aabb& fat_aabb(ProxyId id) const override;
   std::uint64_t user_data(ProxyId id) const override;
   std::size_t proxy_count() const override { return store_.count(); }
+  /// Whether `id` names a live proxy (a loaded snapshot's shapes are checked against it).
+  bool is_proxy(ProxyId id) const { return store_.alive(id); }
 
   void query(const Aabb& box, std::vector<ProxyId>& out) const override;
   void query_point(const Vec2& point, std::vector<ProxyId>& out) const override;

@@ -24,6 +24,11 @@ enum class JointType : std::uint8_t {
   pulley,     ///< two ropes over fixed ground anchors: length_a + ratio * length_b is constant
 };
 
+/// How far (m) a joint's local anchor may lie from its body's origin. The solver works in
+/// single precision, where a longer lever arm would overflow the joint's squared terms and turn
+/// the bodies' states into NaN; a joint definition with an anchor farther out is refused.
+inline constexpr Real max_joint_reach = 1e6;
+
 /// @brief "revolute", "prismatic", "distance", "weld", "wheel", "motor", "gear" or "pulley".
 std::string_view to_string(JointType type) noexcept;
 
