@@ -89,8 +89,7 @@ Sandbox::Sandbox(Renderer& renderer, std::string name, SceneDef scene)
       run_(scene_def_),
       start_(run_.snapshot()) {
   renderer_.layers = draw_shapes | draw_contact_points | draw_joints;
-  forget_ids();
-  fit_camera();
+  start_afresh();
 }
 
 Sandbox::~Sandbox() = default;
@@ -111,20 +110,18 @@ std::optional<std::size_t> Sandbox::finish_recording() {
 void Sandbox::reset() {
   // Rolled back rather than rebuilt, so the world (and a recording of it) goes on.
   run_.restore(start_);
-  forget_ids();
-  fit_camera();
+  start_afresh();
 }
 
 void Sandbox::load_scene() {
   const bool recorded = finish_recording().has_value();
   run_ = SceneRun(scene_def_);
   start_ = run_.snapshot();
-  forget_ids();
-  fit_camera();
+  start_afresh();
   if (recorded) joint_message_ = "recording written to " + record_file_.string();
 }
 
-void Sandbox::forget_ids() {
+void Sandbox::start_afresh() {
   // What was made after the start means nothing now.
   world_anchor_.reset();
   drag_.reset();
@@ -132,6 +129,7 @@ void Sandbox::forget_ids() {
   joint_message_.clear();
   drops_ = 0;
   history_.clear();
+  fit_camera();
 }
 
 void Sandbox::step_back() {

@@ -82,7 +82,7 @@ class Sandbox {
  private:
   void reset();
   void load_scene();
-  void forget_ids();
+  void start_afresh();
   void fit_camera();
   void step();
   void drop_hull(const Vec2& world_point);

@@ -671,8 +671,7 @@ void SweepAndPrune::fields(Archive& archive) {
       if (s != kNoSlot && (s & ~kOversizedBit) >= bound) {
         archive.in.fail("a broadphase slot beyond its array: proxy " + std::to_string(id) + " at " +
                         std::to_string(s & ~kOversizedBit) + " of " + std::to_string(bound) +
-                        ((s & kOversizedBit) != 0 ? " oversized entries" : " entries") +
-                        ", touched " + std::to_string(touched_[id]));
+                        ((s & kOversizedBit) != 0 ? " oversized entries" : " entries"));
       }
     }
     for (const std::uint32_t b : band_begin_) {
