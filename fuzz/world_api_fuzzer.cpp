@@ -153,7 +153,7 @@ class CallSequence {
       const Real t = input_.ConsumeIntegral<std::uint16_t>() / 65535.0;
       return lo + (hi - lo) * t;
     }
-    static constexpr std::array<Real, 12> special = {
+    static constexpr std::array<Real, 15> special = {
         std::numeric_limits<Real>::quiet_NaN(),
         std::numeric_limits<Real>::infinity(),
         -std::numeric_limits<Real>::infinity(),
@@ -166,6 +166,9 @@ class CallSequence {
         -1e4,
         std::numeric_limits<Real>::denorm_min(),
         1.0,
+        1e300,
+        -1e300,
+        std::numeric_limits<Real>::max(),
     };
     return special[(mode - 232) % special.size()];
   }

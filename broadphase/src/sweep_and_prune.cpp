@@ -677,6 +677,18 @@ void SweepAndPrune::fields(Archive& archive) {
     for (const std::uint32_t b : band_begin_) {
       if (b > entries_.size()) archive.in.fail("a broadphase band beyond the entries");
     }
+    // The bands as a rebuild leaves them: the next one sizes its tables by band_count_ (a
+    // count of 10^9 asked for gigabytes).
+    if (band_count_ < 1 || band_count_ > kMaxBands || (sweep_axis_ != 0 && sweep_axis_ != 1) ||
+        (!band_begin_.empty() && band_begin_.size() != std::size_t{band_count_} + 1) ||
+        !std::isfinite(band_origin_) || !std::isfinite(band_scale_) || band_scale_ < 0 ||
+        !(cap0_ >= 0) || !(cap1_ >= 0) || !std::isfinite(max_extent0_) ||
+        !std::isfinite(max_extent1_)) {
+      archive.in.fail("broadphase bands out of range: " + std::to_string(band_count_) + " bands, " +
+                      std::to_string(band_begin_.size()) + " band starts, axis " +
+                      std::to_string(sweep_axis_) + ", scale " + std::to_string(band_scale_) +
+                      ", caps " + std::to_string(cap0_) + " and " + std::to_string(cap1_));
+    }
     for (const ProxyId id : touched_ids_) {
       if (id >= ids) archive.in.fail("a touched proxy that does not exist");
     }

@@ -17,21 +17,28 @@ namespace mink {
 
 using detail::finite;
 using detail::require;
+using detail::within_settings;
+using detail::within_world;
 
 using detail::Body;
 
 namespace {
 
 void check_body_def(const BodyDef& def) {
-  require(finite(def.position), "BodyDef.position must be finite");
+  require(within_world(def.position),
+          "BodyDef.position must be finite and within max_world_coordinate (1e15 m) on each axis");
   require(std::isfinite(def.angle), "BodyDef.angle must be finite");
-  require(finite(def.linear_velocity), "BodyDef.linear_velocity must be finite");
-  require(std::isfinite(def.angular_velocity), "BodyDef.angular_velocity must be finite");
+  require(within_settings(def.linear_velocity),
+          "BodyDef.linear_velocity must be finite and within max_setting_magnitude (1e9 m/s)");
+  require(within_settings(def.angular_velocity),
+          "BodyDef.angular_velocity must be finite and within max_setting_magnitude (1e9 rad/s)");
   require(std::isfinite(def.linear_damping) && def.linear_damping >= 0,
           "BodyDef.linear_damping must be finite and non-negative");
   require(std::isfinite(def.angular_damping) && def.angular_damping >= 0,
           "BodyDef.angular_damping must be finite and non-negative");
-  require(std::isfinite(def.gravity_scale), "BodyDef.gravity_scale must be finite");
+  require(std::isfinite(def.gravity_scale) && std::abs(def.gravity_scale) <= max_setting_magnitude,
+          "BodyDef.gravity_scale must lie within max_setting_magnitude (1e9), got " +
+              detail::exact_number(def.gravity_scale));
   require(!std::isnan(def.continuous_threshold) && def.continuous_threshold >= 0,
           "BodyDef.continuous_threshold must be non-negative");
 }
@@ -284,8 +291,9 @@ std::vector<ContactData> World::body_contacts(BodyId id) const {
 
 void World::set_transform(BodyId id, const Vec2& position, Real angle) {
   const detail::RecordScope record(*this, detail::Call::set_transform, id, position, angle);
-  require(finite(position) && std::isfinite(angle),
-          "set_transform of " + to_string(id) + ": position and angle must be finite");
+  require(within_world(position) && std::isfinite(angle),
+          "set_transform of " + to_string(id) +
+              ": position and angle must be finite, the position within max_world_coordinate");
   WorldState& w = *state_;
   Body& b = w.body(id);
   for (std::uint32_t s : b.shapes) w.update_seams(s, true);  // the old neighbours
@@ -303,7 +311,8 @@ void World::set_transform(BodyId id, const Vec2& position, Real angle) {
 
 void World::set_linear_velocity(BodyId id, const Vec2& velocity) {
   const detail::RecordScope record(*this, detail::Call::set_linear_velocity, id, velocity);
-  require(finite(velocity), "set_linear_velocity of " + to_string(id) + ": must be finite");
+  require(within_settings(velocity), "set_linear_velocity of " + to_string(id) +
+                                         ": must be finite and within max_setting_magnitude");
   Body& b = state_->body(id);
   if (b.type == BodyType::static_body) return;
   b.velocity = velocity;
@@ -312,7 +321,8 @@ void World::set_linear_velocity(BodyId id, const Vec2& velocity) {
 
 void World::set_angular_velocity(BodyId id, Real velocity) {
   const detail::RecordScope record(*this, detail::Call::set_angular_velocity, id, velocity);
-  require(std::isfinite(velocity), "set_angular_velocity of " + to_string(id) + ": must be finite");
+  require(within_settings(velocity), "set_angular_velocity of " + to_string(id) +
+                                         ": must be finite and within max_setting_magnitude");
   Body& b = state_->body(id);
   if (b.type == BodyType::static_body || b.fixed_rotation) return;
   b.angular_velocity = velocity;
@@ -325,9 +335,13 @@ void World::apply_force(BodyId id, const Vec2& force, const Vec2& world_point) {
           "apply_force to " + to_string(id) + ": force and point must be finite");
   Body& b = state_->body(id);
   if (b.type != BodyType::dynamic) return;
-  b.force += force;
   const Vec2 r = world_point - b.center;
-  b.torque += r.x() * force.y() - r.y() * force.x();
+  const Vec2 total_force = b.force + force;
+  const Real total_torque = b.torque + (r.x() * force.y() - r.y() * force.x());
+  require(finite(total_force) && std::isfinite(total_torque),
+          "apply_force to " + to_string(id) + ": the force so far and its torque overflow");
+  b.force = total_force;
+  b.torque = total_torque;
   state_->wake(b);
 }
 
@@ -336,6 +350,8 @@ void World::apply_torque(BodyId id, Real torque) {
   require(std::isfinite(torque), "apply_torque to " + to_string(id) + ": must be finite");
   Body& b = state_->body(id);
   if (b.type != BodyType::dynamic) return;
+  require(std::isfinite(b.torque + torque),
+          "apply_torque to " + to_string(id) + ": the torque so far overflows");
   b.torque += torque;
   state_->wake(b);
 }
@@ -347,9 +363,15 @@ void World::apply_linear_impulse(BodyId id, const Vec2& impulse, const Vec2& wor
           "apply_linear_impulse to " + to_string(id) + ": impulse and point must be finite");
   Body& b = state_->body(id);
   if (b.type != BodyType::dynamic) return;
-  b.velocity += b.inv_mass * impulse;
   const Vec2 r = world_point - b.center;
-  b.angular_velocity += b.inv_inertia * (r.x() * impulse.y() - r.y() * impulse.x());
+  const Vec2 velocity = b.velocity + b.inv_mass * impulse;
+  const Real angular_velocity =
+      b.angular_velocity + b.inv_inertia * (r.x() * impulse.y() - r.y() * impulse.x());
+  require(within_settings(velocity) && within_settings(angular_velocity),
+          "apply_linear_impulse to " + to_string(id) +
+              ": the velocity it gives lies beyond max_setting_magnitude");
+  b.velocity = velocity;
+  b.angular_velocity = angular_velocity;
   state_->wake(b);
 }
 
@@ -438,10 +460,12 @@ void World::set_continuous_threshold(BodyId id, Real threshold) {
 void World::set_target_transform(BodyId id, const Vec2& position, Real angle, Real time_step) {
   const detail::RecordScope record(*this, detail::Call::set_target_transform, id, position, angle,
                                    time_step);
-  require(finite(position) && std::isfinite(angle),
-          "set_target_transform of " + to_string(id) + ": position and angle must be finite");
-  require(std::isfinite(time_step) && time_step > 0,
-          "set_target_transform of " + to_string(id) + ": time_step must be positive and finite");
+  require(within_world(position) && std::isfinite(angle),
+          "set_target_transform of " + to_string(id) +
+              ": position and angle must be finite, the position within max_world_coordinate");
+  require(std::isfinite(time_step) && time_step >= 1 / max_setting_magnitude,
+          "set_target_transform of " + to_string(id) +
+              ": time_step must be finite and at least 1 / max_setting_magnitude (1e-9 s)");
   WorldState& w = *state_;
   Body& b = w.body(id);
   require(b.type == BodyType::kinematic, "set_target_transform of " + to_string(id) +
@@ -465,9 +489,10 @@ void World::set_target_transform(BodyId id, const Vec2& position, Real angle, Re
 void World::set_mass_data(BodyId id, const MassData& mass) {
   const detail::RecordScope record(*this, detail::Call::set_mass_data, id, mass);
   require(std::isfinite(mass.mass) && mass.mass >= 0 && std::isfinite(mass.rotational_inertia) &&
-              mass.rotational_inertia >= 0 && finite(mass.center),
+              mass.rotational_inertia >= 0 && within_world(mass.center),
           "set_mass_data of " + to_string(id) +
-              ": mass and inertia must be finite and non-negative, the centre finite");
+              ": mass and inertia must be finite and non-negative, the centre finite and within "
+              "max_world_coordinate");
   if ((mass.mass > 0 && mass.mass < min_mass_property) ||
       (mass.rotational_inertia > 0 && mass.rotational_inertia < min_mass_property)) {
     throw InvalidArgumentError("set_mass_data of " + to_string(id) + ": mass " +

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <string>
 
+#include "mink/engine/body_def.hpp"
+#include "mink/engine/world_def.hpp"
 #include "mink/error.hpp"
 #include "mink/geometry/types.hpp"
 
@@ -16,6 +18,20 @@ inline void require(bool ok, const std::string& what) {
 
 inline bool finite(const Vec2& v) {
   return std::isfinite(v.x()) && std::isfinite(v.y());
+}
+
+// Finite and within max_world_coordinate of the origin on each axis.
+inline bool within_world(const Vec2& v) {
+  return finite(v) && std::abs(v.x()) <= max_world_coordinate &&
+         std::abs(v.y()) <= max_world_coordinate;
+}
+
+// Finite and within max_setting_magnitude: a velocity (each component), an angular velocity.
+inline bool within_settings(Real v) {
+  return std::isfinite(v) && std::abs(v) <= max_setting_magnitude;
+}
+inline bool within_settings(const Vec2& v) {
+  return within_settings(v.x()) && within_settings(v.y());
 }
 
 // `value` to all 17 significant digits: for messages about values too close to a limit to

@@ -168,13 +168,18 @@ detail::JointKind make_kind(const JointDef& def) {
 
 }  // namespace
 
+void detail::check_joint_def(const JointDef& def) {
+  const DefCheck check(std::string(to_string(mink::joint_type(def))) + " joint");
+  std::visit([&](const auto& d) { check_def(check, d); }, def);
+  check.base(joint_base(def));
+}
+
 JointId World::create_joint(const JointDef& def) {
   const detail::RecordScope record(*this, detail::Call::create_joint, def);
   WorldState& w = *state_;
+  detail::check_joint_def(def);
   const DefCheck check(std::string(to_string(mink::joint_type(def))) + " joint");
-  std::visit([&](const auto& d) { check_def(check, d); }, def);
   const JointBase& b = joint_base(def);
-  check.base(b);
 
   Joint joint;
   if (const auto* gear = std::get_if<GearJointDef>(&def)) {

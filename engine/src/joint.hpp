@@ -61,6 +61,10 @@ inline JointBase& base(Joint& joint) {
 inline JointDef def_of(const Joint& joint) {
   return std::visit([](const auto& k) -> JointDef { return k.def; }, joint.kind);
 }
+// The API's checks of a joint definition (World::create_joint's, which the snapshot loader
+// runs as well): throws InvalidArgumentError naming the offending field.
+void check_joint_def(const JointDef& def);
+
 inline JointType type_of(const Joint& joint) {
   return static_cast<JointType>(joint.kind.index());
 }

@@ -16,6 +16,9 @@ void prepare(RevoluteJoint& joint, JointFrame& frame) {
   set_anchors(frame, joint.def.local_anchor_a, joint.def.local_anchor_b);
   const Real k = frame.bodies[0].inv_inertia + frame.bodies[1].inv_inertia;
   joint.axial_mass = k > 0 ? 1 / k : 0;
+  const RevoluteJointDef& def = joint.def;
+  joint.angle_rows =
+      joint.axial_mass > 0 && (def.spring.enabled || def.motor.enabled || def.limit.enabled);
   joint.spring_soft =
       make_softness(joint.def.spring.hertz, joint.def.spring.damping_ratio, frame.h);
   frame.coordinate_a = joint.angle;
@@ -38,21 +41,22 @@ void warm_start(const RevoluteJoint& joint, const JointFrame& frame, SolverBody*
 void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias) {
   SolverBody& a = bodies[frame.bodies[0].solver];
   SolverBody& b = bodies[frame.bodies[1].solver];
-  const RevoluteJointDef& def = joint.def;
-  const bool turns = joint.axial_mass > 0;
-  // The angle only where a row needs it (two arc tangents a substep, for every joint of a
-  // large net otherwise).
-  const auto angle = [&] { return frame.coordinate_a + (delta_angle(b) - delta_angle(a)); };
-  if (def.spring.enabled && turns) {
-    solve_angular_spring(a, b, frame, joint.axial_mass, joint.spring_soft,
-                         angle() - def.spring.target, joint.spring_impulse);
-  }
-  if (def.motor.enabled && turns) {
-    solve_angular_motor(a, b, frame, joint.axial_mass, def.motor, joint.motor_impulse);
-  }
-  if (def.limit.enabled && turns) {
-    solve_angular_limits(a, b, frame, joint.axial_mass, angle(), def.limit, use_bias,
-                         joint.lower_impulse, joint.upper_impulse);
+  if (joint.angle_rows) {
+    const RevoluteJointDef& def = joint.def;
+    // The angle only where a row needs it (two arc tangents a substep, for every joint of a
+    // large net otherwise).
+    const auto angle = [&] { return frame.coordinate_a + (delta_angle(b) - delta_angle(a)); };
+    if (def.spring.enabled) {
+      solve_angular_spring(a, b, frame, joint.axial_mass, joint.spring_soft,
+                           angle() - def.spring.target, joint.spring_impulse);
+    }
+    if (def.motor.enabled) {
+      solve_angular_motor(a, b, frame, joint.axial_mass, def.motor, joint.motor_impulse);
+    }
+    if (def.limit.enabled) {
+      solve_angular_limits(a, b, frame, joint.axial_mass, angle(), def.limit, use_bias,
+                           joint.lower_impulse, joint.upper_impulse);
+    }
   }
   if (!joint.direct) solve_point(a, b, frame, use_bias, joint.linear_impulse);
 }

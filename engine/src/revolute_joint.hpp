@@ -13,7 +13,10 @@ struct RevoluteJoint {
   Real spring_impulse = 0, motor_impulse = 0, lower_impulse = 0, upper_impulse = 0;
   Real angle = 0;       // the joint angle at the end of the last step, counted through full turns
   bool direct = false;  // its point row is solved with its chain's (joint_chain_solver.hpp)
-  // Prepared for the step.
+  // Prepared for the step. Whether an angle row (spring, motor, limit) is on and the pair can
+  // turn: beside `direct`, so a plain pin's solve reads one line of the record, not the
+  // definition's three (in a large net of pins those reads were most of the solve).
+  bool angle_rows = false;
   Real axial_mass = 0;
   Softness spring_soft;
 };

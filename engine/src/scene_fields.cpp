@@ -530,7 +530,7 @@ constexpr SceneField<WorldDef> kWorldFields[] = {
     field<&WorldDef::gravity>("gravity", FieldKind::vec2, "m/s^2, world frame"),
     field<&WorldDef::time_step>("time_step", FieldKind::real, "seconds per fixed step", kPositive),
     field<&WorldDef::substeps>("substeps", FieldKind::integer, "soft-step substeps per step",
-                               {1, 1000}),
+                               {1, max_substeps}),
     field<&WorldDef::contact_hertz>("contact_hertz", FieldKind::real,
                                     "contact spring stiffness, cycles per second", kNonNegative),
     field<&WorldDef::contact_damping_ratio>("contact_damping_ratio", FieldKind::real,
@@ -542,7 +542,8 @@ constexpr SceneField<WorldDef> kWorldFields[] = {
     field<&WorldDef::joint_damping_ratio>("joint_damping_ratio", FieldKind::real,
                                           "damping of that push-out (1: critical)", kNonNegative),
     field<&WorldDef::joint_iterations>("joint_iterations", FieldKind::integer,
-                                       "joint passes per substep in the biased solve", {1, 1000}),
+                                       "joint passes per substep in the biased solve",
+                                       {1, max_joint_iterations}),
     field<&WorldDef::direct_joint_chains>("direct_joint_chains", FieldKind::boolean,
                                           "solve chains of revolute joints exactly as one system"),
     field<&WorldDef::enable_continuous>(

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <utility>
 
+#include "checks.hpp"
 #include "mink/error.hpp"
 #include "mink/geometry/transform.hpp"
 
@@ -131,6 +132,14 @@ void check_shape_def(const ShapeDef& def) {
   check_material(def.restitution, "restitution");
   require(std::isfinite(def.radius) && def.radius >= 0,
           "ShapeDef.radius must be finite and non-negative, got " + number(def.radius));
+  require(
+      def.radius <= max_world_coordinate,
+      "ShapeDef.radius must not exceed max_world_coordinate (1e15 m), got " + number(def.radius));
+  for (std::size_t i = 0; i < def.points.size(); ++i) {
+    require(!detail::finite(def.points[i]) || detail::within_world(def.points[i]),
+            "ShapeDef.points[" + std::to_string(i) +
+                "] lies beyond max_world_coordinate (1e15 m) of its body's origin");
+  }
   require(!def.scale || def.type == ShapeType::polygon,
           "ShapeDef.scale applies to polygons only, not to a " + std::string(to_string(def.type)));
   require(!def.loop || def.type == ShapeType::chain, "ShapeDef.loop applies to chains only");

@@ -10,6 +10,7 @@
 #include "mink/byte_stream.hpp"
 #include "mink/engine/world.hpp"
 #include "record_scope.hpp"
+#include "snapshot_checks.hpp"
 #include "snapshot_io.hpp"
 #include "world_state.hpp"
 
@@ -98,77 +99,6 @@ void state_fields(Archive& a, WorldState& w) {
   a(w.island_parent);
 }
 
-// Every index the step follows without checking must name a slot that exists: a snapshot
-// that passes its checksum but was made by hand is refused here rather than read out of range.
-void check_indices(const WorldState& w, ByteReader& in) {
-  const std::size_t bodies = w.bodies.size(), shapes = w.shapes.size();
-  const std::size_t joints = w.joints.size(), contacts = w.contacts.size();
-  const auto below = [&](std::size_t index, std::size_t bound, const char* what) {
-    if (index >= bound) in.fail(std::string(what) + " " + std::to_string(index) + " out of range");
-  };
-  const auto color_ok = [](std::uint8_t c) {
-    return c <= detail::kOverflowColor || c == detail::kNoColor;
-  };
-  for (std::size_t i = 0; i < bodies; ++i) {
-    const detail::Body& b = w.bodies[i];
-    // Its pose and motion: the API never makes them non-finite, and the first step would turn
-    // the world NaN. (Other values may be infinite: the thinnest extent of a body without
-    // shapes, say.)
-    const Real values[] = {b.center.x(),
-                           b.center.y(),
-                           b.rotation.cos,
-                           b.rotation.sin,
-                           b.origin.x(),
-                           b.origin.y(),
-                           b.velocity.x(),
-                           b.velocity.y(),
-                           b.angular_velocity,
-                           b.local_center.x(),
-                           b.local_center.y(),
-                           b.force.x(),
-                           b.force.y(),
-                           b.torque,
-                           b.previous_origin.x(),
-                           b.previous_origin.y(),
-                           b.previous_rotation.cos,
-                           b.previous_rotation.sin};
-    for (const Real v : values) {
-      if (b.alive && !std::isfinite(v)) in.fail("body " + std::to_string(i) + " is not finite");
-    }
-    for (const std::uint32_t s : b.shapes) below(s, shapes, "a body's shape");
-    for (const std::uint32_t c : b.contacts) below(c, contacts, "a body's contact");
-    for (const std::uint32_t j : b.joints) below(j, joints, "a body's joint");
-  }
-  for (std::size_t i = 0; i < shapes; ++i) {
-    const detail::Shape& s = w.shapes[i];
-    below(s.body, bodies, "a shape's body");
-    // A live shape's proxy, if it has one, is a live proxy that names it back.
-    if (s.alive && s.proxy != null_proxy &&
-        (!w.broadphase.is_proxy(s.proxy) || w.broadphase.user_data(s.proxy) != i)) {
-      in.fail("shape " + std::to_string(i) + "'s broadphase proxy " + std::to_string(s.proxy) +
-              " is not one of its own");
-    }
-  }
-  for (const detail::Contact& c : w.contacts) {
-    below(c.body_a, bodies, "a contact's body");
-    below(c.body_b, bodies, "a contact's body");
-    below(c.shape_a, shapes, "a contact's shape");
-    below(c.shape_b, shapes, "a contact's shape");
-    if (!color_ok(c.color)) in.fail("a contact colour out of range");
-  }
-  for (const detail::Joint& j : w.joints) {
-    if (j.body_count < 2 || j.body_count > 4) in.fail("a joint with a bad body count");
-    for (int k = 0; k < j.body_count; ++k) below(j.body[k], bodies, "a joint's body");
-    for (const std::uint32_t g : j.gear_joints) below(g, joints, "a gear's joint");
-    for (const std::uint32_t g : j.gears) below(g, joints, "a joint's gear");
-    if (!color_ok(j.color)) in.fail("a joint colour out of range");
-  }
-  for (const detail::SensorState& s : w.sensors) below(s.shape, shapes, "a sensor shape");
-  for (const std::uint32_t i : w.awake_list) below(i, bodies, "an awake body");
-  for (const std::uint32_t i : w.newly_acting) below(i, contacts, "a contact waiting for a colour");
-  for (const std::uint32_t i : w.island_parent) below(i, bodies, "an island parent");
-}
-
 std::vector<std::uint8_t> payload_of(const WorldState& w) {
   ByteWriter out;
   SaveArchive archive{out};
@@ -228,7 +158,7 @@ std::unique_ptr<WorldState> parse(std::span<const std::uint8_t> bytes, const Wor
   LoadArchive archive{in, serial};
   state_fields(archive, *state);
   if (in.remaining() != 0) in.fail("state ends before the snapshot does");
-  check_indices(*state, in);
+  detail::check_snapshot_state(*state, in);
   try {
     detail::check_world_def(state->def);
   } catch (const Error& e) {

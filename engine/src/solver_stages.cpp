@@ -4,10 +4,26 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <numbers>
 
 #include "world_state.hpp"
 
 namespace mink {
+
+namespace {
+
+// `v` scaled to length `limit` when longer (hypot, as the squares of 1e300 would overflow). An
+// infinite component (a force of 1e300 N on a body of min_mass_property) points the way.
+Vec2 clamp_length(Vec2 v, Real limit) {
+  if (std::isinf(v.x()) || std::isinf(v.y())) {
+    v = Vec2(std::isinf(v.x()) ? std::copysign(Real(1), v.x()) : 0,
+             std::isinf(v.y()) ? std::copysign(Real(1), v.y()) : 0);
+  }
+  const Real length = std::hypot(v.x(), v.y());
+  return length > limit ? Vec2(v * (limit / length)) : v;
+}
+
+}  // namespace
 
 using detail::Body;
 using detail::Contact;
@@ -29,6 +45,8 @@ void prefetch_contact(const Contact& c) {
 
 void WorldState::prepare_contacts() {
   const Real h = dt / substeps;
+  // A body turns at most an eighth of a turn per substep (the solver's clamp).
+  const Real max_angular_speed = 0.25 * std::numbers::pi / h;
 
   // Solver bodies: every awake body that moves, then one still body standing in for static
   // and sleeping ones.
@@ -41,20 +59,36 @@ void WorldState::prepare_contacts() {
   body_solver_index.resize(bodies.size(), -1);
   compact_awake_list();
   for (const std::uint32_t i : awake_list) {
-    const Body& b = bodies[i];
+    Body& b = bodies[i];
     body_solver_index[i] = static_cast<std::int32_t>(solver_bodies.size());
     solver_info.push_back({b.center.x(), b.center.y(), b.inv_mass, b.inv_inertia});
+    // The solver is single precision and squares speeds: a velocity set beyond the speed
+    // limits, or a push of a huge force, is scaled down here in double precision (1e300 m/s
+    // became infinite there and the body NaN). Velocities go to the limits, where the solver
+    // clamps them anyway; a kinematic body, which moves by its own velocity in double
+    // precision, keeps the clamped one, as its contacts see; the push keeps its direction to
+    // a millionth.
+    const Vec2 velocity = clamp_length(b.velocity, def.max_linear_speed);
+    const Real angular_velocity =
+        std::clamp(b.angular_velocity, -max_angular_speed, max_angular_speed);
+    if (b.type == BodyType::kinematic) {
+      b.velocity = velocity;
+      b.angular_velocity = angular_velocity;
+    }
     detail::SolverBody sb;
-    sb.vx = b.velocity.x();
-    sb.vy = b.velocity.y();
-    sb.w = b.angular_velocity;
+    sb.vx = velocity.x();
+    sb.vy = velocity.y();
+    sb.w = angular_velocity;
     solver_bodies.push_back(sb);
     detail::SolverBodyParams p;
     if (b.type == BodyType::dynamic) {
-      const Vec2 dv = h * (b.inv_mass * b.force + b.gravity_scale * def.gravity);
+      const Vec2 dv = clamp_length(h * (b.inv_mass * b.force + b.gravity_scale * def.gravity),
+                                   1e6 * def.max_linear_speed);
       p.dvx = dv.x();
       p.dvy = dv.y();
-      p.dw = h * b.inv_inertia * b.torque;
+      // Beyond twice the limit, the solver ends at the limit whatever the body turned at.
+      p.dw =
+          std::clamp(h * b.inv_inertia * b.torque, -2 * max_angular_speed, 2 * max_angular_speed);
       p.linear_damping = 1 / (1 + h * b.linear_damping);
       p.angular_damping = 1 / (1 + h * b.angular_damping);
     }

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "checks.hpp"
 #include "mink/engine/stale_id_error.hpp"
@@ -29,11 +30,10 @@ std::string to_string(ShapeId id) {
 namespace detail {
 
 void check_world_def(const WorldDef& def) {
-  require(finite(def.gravity), "WorldDef.gravity must be finite");
   require(std::isfinite(def.time_step) && def.time_step > 0,
           "WorldDef.time_step must be positive and finite, got " + std::to_string(def.time_step));
-  require(def.substeps >= 1,
-          "WorldDef.substeps must be at least 1, got " + std::to_string(def.substeps));
+  require(def.substeps >= 1 && def.substeps <= max_substeps,
+          "WorldDef.substeps must be 1..max_substeps (1000), got " + std::to_string(def.substeps));
   require(std::isfinite(def.contact_hertz) && def.contact_hertz >= 0,
           "WorldDef.contact_hertz must be finite and non-negative");
   require(std::isfinite(def.contact_damping_ratio) && def.contact_damping_ratio >= 0,
@@ -42,8 +42,9 @@ void check_world_def(const WorldDef& def) {
           "WorldDef.joint_hertz must be finite and non-negative");
   require(std::isfinite(def.joint_damping_ratio) && def.joint_damping_ratio >= 0,
           "WorldDef.joint_damping_ratio must be finite and non-negative");
-  require(def.joint_iterations >= 1, "WorldDef.joint_iterations must be at least 1, got " +
-                                         std::to_string(def.joint_iterations));
+  require(def.joint_iterations >= 1 && def.joint_iterations <= max_joint_iterations,
+          "WorldDef.joint_iterations must be 1..max_joint_iterations (1000), got " +
+              std::to_string(def.joint_iterations));
   require(std::isfinite(def.contact_push_max_velocity) && def.contact_push_max_velocity >= 0,
           "WorldDef.contact_push_max_velocity must be finite and non-negative");
   require(std::isfinite(def.restitution_threshold) && def.restitution_threshold >= 0,
@@ -65,6 +66,36 @@ void check_world_def(const WorldDef& def) {
           "WorldDef.worker_count must be 1..256, got " + std::to_string(def.worker_count));
   require((def.task_system.enqueue == nullptr) == (def.task_system.finish == nullptr),
           "WorldDef.task_system needs both enqueue and finish, or neither");
+  check_gravity(def.gravity, "WorldDef.gravity");
+  const std::pair<const char*, Real> settings[] = {
+      {"time_step", def.time_step},
+      {"contact_hertz", def.contact_hertz},
+      {"contact_damping_ratio", def.contact_damping_ratio},
+      {"joint_hertz", def.joint_hertz},
+      {"joint_damping_ratio", def.joint_damping_ratio},
+      {"contact_push_max_velocity", def.contact_push_max_velocity},
+      {"restitution_threshold", def.restitution_threshold},
+      {"hit_event_threshold", def.hit_event_threshold},
+      {"linear_slop", def.linear_slop},
+      {"max_linear_speed", def.max_linear_speed},
+      {"manifold_reuse_distance", def.manifold_reuse_distance},
+  };
+  for (const auto& [name, value] : settings) {
+    require(std::abs(value) <= max_setting_magnitude,
+            std::string("WorldDef.") + name + " must not exceed max_setting_magnitude (1e9), got " +
+                exact_number(value));
+  }
+  require(def.time_step >= 1 / max_setting_magnitude,
+          "WorldDef.time_step must be at least 1 / max_setting_magnitude (1e-9 s), got " +
+              exact_number(def.time_step));
+}
+
+void check_gravity(const Vec2& gravity, const std::string& what) {
+  require(finite(gravity), what + " must be finite");
+  require(std::abs(gravity.x()) <= max_setting_magnitude &&
+              std::abs(gravity.y()) <= max_setting_magnitude,
+          what + " must lie within max_setting_magnitude (1e9 m/s^2) on each axis, got (" +
+              exact_number(gravity.x()) + ", " + exact_number(gravity.y()) + ")");
 }
 
 }  // namespace detail
@@ -88,7 +119,7 @@ const WorldDef& World::def() const noexcept {
 
 void World::set_gravity(const Vec2& gravity) {
   const detail::RecordScope record(*this, detail::Call::set_gravity, gravity);
-  require(finite(gravity), "gravity must be finite");
+  detail::check_gravity(gravity, "gravity");
   state_->def.gravity = gravity;
   for (detail::Body& b : state_->bodies) {
     if (b.alive) state_->wake(b);
@@ -112,9 +143,12 @@ void World::step() {
 
 void World::step(Real time_step, int substeps) {
   const detail::RecordScope record(*this, detail::Call::step_with, time_step, substeps);
-  require(std::isfinite(time_step) && time_step > 0,
-          "step: time_step must be positive and finite, got " + std::to_string(time_step));
-  require(substeps >= 1, "step: substeps must be at least 1, got " + std::to_string(substeps));
+  require(std::isfinite(time_step) && time_step >= 1 / max_setting_magnitude &&
+              time_step <= max_setting_magnitude,
+          "step: time_step must be 1e-9..1e9 s (max_setting_magnitude), got " +
+              detail::exact_number(time_step));
+  require(substeps >= 1 && substeps <= max_substeps,
+          "step: substeps must be 1..max_substeps (1000), got " + std::to_string(substeps));
   run_step(true, time_step, substeps);
 }
 

@@ -24,6 +24,8 @@ namespace mink {
 namespace detail {
 // Throws InvalidArgumentError naming the first bad field (world.cpp).
 void check_world_def(const WorldDef& def);
+// Finite and within max_setting_magnitude on each axis; `what` names it in the message.
+void check_gravity(const Vec2& gravity, const std::string& what);
 }  // namespace detail
 
 // Everything a World owns. Each concept's data and operations live in their own file (body,

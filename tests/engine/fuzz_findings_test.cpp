@@ -3,11 +3,19 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <string>
+#include <vector>
 
+#include "mink/byte_stream.hpp"
 #include "mink/engine/scene.hpp"
 #include "mink/engine/scene_file.hpp"
 #include "mink/engine/world.hpp"
@@ -18,6 +26,14 @@ namespace mink {
 namespace {
 
 using test::all_finite;
+
+// Steps `world` `steps` times; fails at the first step that leaves a state non-finite.
+void expect_steps_finite(World& world, int steps) {
+  for (int i = 0; i < steps; ++i) {
+    world.step();
+    ASSERT_TRUE(all_finite(world)) << "step " << i;
+  }
+}
 
 // A spinning box given a rotational inertia of 4.9e-324 (the smallest double) had an infinite
 // inverse inertia in the solver: the next step made its state NaN, and the broadphase threw
@@ -55,10 +71,7 @@ TEST(FuzzFindings, SmallestMassPropertiesStayFinite) {
   world.set_angular_velocity(box, 5);
   const BodyId heavy = test::add_box(world, {0.2, 2});
   world.set_linear_velocity(heavy, {0, -5});
-  for (int i = 0; i < 120; ++i) {
-    world.step();
-    ASSERT_TRUE(all_finite(world)) << "step " << i;
-  }
+  expect_steps_finite(world, 120);
 }
 
 // A density so small that the shape's mass (density times area) is below min_mass_property
@@ -154,10 +167,7 @@ TEST(FuzzFindings, AChainLinkPinnedTwiceStaysFinite) {
   ASSERT_TRUE(world.def().direct_joint_chains);
   const BodyId first = world.bodies()[1];
   const Vec2 start = world.position(first);
-  for (int i = 0; i < 300; ++i) {
-    world.step();
-    ASSERT_TRUE(all_finite(world)) << "step " << i;
-  }
+  expect_steps_finite(world, 300);
   // Pinned at two points, the first link cannot move.
   EXPECT_LT((world.position(first) - start).norm(), 0.01);
 }
@@ -169,7 +179,8 @@ TEST(FuzzFindings, AChainLinkPinnedTwiceStaysFinite) {
 TEST(FuzzFindings, AJointAnchorBeyondItsReachIsRefused) {
   World world;
   const BodyId ground = world.create_body({});
-  const BodyId far = test::add_box(world, {2.2e17, 17});
+  // (The body itself now lies within max_world_coordinate, as a body at 2.2e17 m is refused.)
+  const BodyId far = test::add_box(world, {1e9, 17});
   const std::string error = test::error_of<InvalidArgumentError>(
       [&] { world.create_joint(revolute_joint_at(world, ground, far, Vec2(2.5, 17.5))); });
   EXPECT_NE(error.find("local_anchor_b"), std::string::npos) << error;
@@ -182,13 +193,208 @@ TEST(FuzzFindings, AJointAnchorBeyondItsReachIsRefused) {
 
   const std::string scene = R"({"format": "minkowski-scene", "version": 1, "bodies": [
       {"type": "static", "position": [0, 20], "shapes": []},
-      {"type": "dynamic", "position": [216516504294495533, 17], "shapes": [{"circle":
+      {"type": "dynamic", "position": [1e9, 17], "shapes": [{"circle":
       {"radius": 0.25}}]}], "joints": [{"type": "revolute", "body_a": 0, "body_b": 1,
       "anchor": [2.5, 17.5]}]})";
   const std::string scene_error =
       test::error_of<SceneFileError>([&] { (void)parse_scene_json(scene); });
   EXPECT_NE(scene_error.find("joints[0]"), std::string::npos) << scene_error;
   EXPECT_NE(scene_error.find("local_anchor_b"), std::string::npos) << scene_error;
+}
+
+// The snapshot-restore fuzzer found a world whose gravity was 1e175 m/s^2: finite, so taken,
+// but the single-precision solver turned it infinite and the world NaN in one step. Gravity,
+// the other world settings and a body's gravity scale now stay within max_setting_magnitude
+// (and the time step above its inverse), refused otherwise; at that limit the world stays finite.
+TEST(FuzzFindings, SettingsBeyondTheSolversRangeAreRefused) {
+  WorldDef def;
+  def.gravity = Vec2(1e175, 0);
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] { World world(def); }).find("gravity"),
+            std::string::npos);
+  def = {};
+  def.time_step = 1e-300;
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] { World world(def); }).find("time_step"),
+            std::string::npos);
+  def = {};
+  def.contact_hertz = 1e300;
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] { World world(def); }).find("contact_hertz"),
+            std::string::npos);
+
+  // The snapshot-restore fuzzer's next find: 10^8 substeps, which asked for gigabytes.
+  def = {};
+  def.substeps = 100'000'000;
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] { World world(def); }).find("substeps"),
+            std::string::npos);
+
+  World world;
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.step(1.0 / 60, 100'000'000);
+            }).find("max_substeps"),
+            std::string::npos);
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.set_gravity(Vec2(0, -2 * max_setting_magnitude));
+            }).find("gravity"),
+            std::string::npos);
+  BodyDef heavy;
+  heavy.type = BodyType::dynamic;
+  heavy.gravity_scale = 1e300;
+  EXPECT_NE(
+      test::error_of<InvalidArgumentError>([&] { world.create_body(heavy); }).find("gravity_scale"),
+      std::string::npos);
+  EXPECT_EQ(world.body_count(), 0u);
+
+  def = {};
+  def.gravity = Vec2(max_setting_magnitude, -max_setting_magnitude);
+  def.max_linear_speed = max_setting_magnitude;
+  def.contact_hertz = max_setting_magnitude;
+  World extreme(def);
+  test::add_ground(extreme);
+  test::add_box(extreme, {0, 0.6});
+  heavy.gravity_scale = -max_setting_magnitude;
+  heavy.position = Vec2(0, 3);
+  extreme.create_shape(extreme.create_body(heavy), ShapeDef::circle(0.25));
+  expect_steps_finite(extreme, 60);
+}
+
+// The snapshot-restore fuzzer found a body at -2e306 m: finite, but sums of coordinates there
+// overflow and the world turned NaN in a step. Bodies and shape points now stay within
+// max_world_coordinate, refused beyond; at that distance a body still steps finite.
+TEST(FuzzFindings, CoordinatesBeyondTheWorldAreRefused) {
+  World world;
+  BodyDef far;
+  far.type = BodyType::dynamic;
+  far.position = Vec2(0, -2e306);
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.create_body(far);
+            }).find("max_world_coordinate"),
+            std::string::npos);
+  far.position = Vec2(max_world_coordinate, 10 - max_world_coordinate);
+  const BodyId body = world.create_body(far);
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.set_transform(body, Vec2(2 * max_world_coordinate, 0), 0);
+            }).find("max_world_coordinate"),
+            std::string::npos);
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.create_shape(body, ShapeDef::circle(0.5, Vec2(0, 1e300)));
+            }).find("points[0]"),
+            std::string::npos);
+  world.create_shape(body, ShapeDef::box(0.5, 0.5));
+  BodyDef ground;
+  ground.position = Vec2(max_world_coordinate, 8 - max_world_coordinate);
+  world.create_shape(world.create_body(ground), ShapeDef::box(5, 0.5));
+  expect_steps_finite(world, 60);
+}
+
+// A velocity of 1e300 m/s, or the push of a force that size, was taken (it is finite), but the
+// single-precision solver turned it infinite and the world NaN in a step; a kinematic body,
+// which moves by its own velocity in double precision, spun at 1e300 rad/s turned NaN at once;
+// an impulse of twice the largest double overflowed the velocity. (The World API fuzzer found
+// these once it drew such values.) Velocities beyond max_setting_magnitude are now refused,
+// as is an impulse or force that would overflow; anything faster than the speed limits goes
+// at the limits, in the direction it was given, and every state stays finite.
+TEST(FuzzFindings, HugeVelocitiesAndPushesGoAtTheSpeedLimit) {
+  World world;
+  const Real limit = world.def().max_linear_speed;
+  const Real huge = max_setting_magnitude;
+  const BodyId fired = test::add_box(world, {0, 0});
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.set_linear_velocity(fired, {1e300, -1e300});
+            }).find("max_setting_magnitude"),
+            std::string::npos);
+  world.set_linear_velocity(fired, {huge, -huge});
+  const BodyId pushed = test::add_box(world, {0, 20});
+  world.apply_force(pushed, {-1e300, 0}, world.world_center(pushed));
+  const BodyId struck = test::add_box(world, {0, 40});
+  const Vec2 at_rest = world.linear_velocity(struck);
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.apply_linear_impulse(struck, {0, std::numeric_limits<Real>::max()},
+                                         world.world_center(struck));
+            }).find("max_setting_magnitude"),
+            std::string::npos);
+  EXPECT_EQ(world.linear_velocity(struck), at_rest);
+  world.apply_linear_impulse(struck, {0, huge}, world.world_center(struck));
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.apply_force(struck, {1e300, 0}, world.world_center(struck) + Vec2(0, 1e10));
+            }).find("overflow"),
+            std::string::npos);
+
+  BodyDef spinner;
+  spinner.type = BodyType::kinematic;
+  spinner.position = Vec2(10, 10);
+  const BodyId spun = world.create_body(spinner);
+  world.create_shape(spun, ShapeDef::box(1, 0.1));
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.set_angular_velocity(spun, -1e300);
+            }).find("max_setting_magnitude"),
+            std::string::npos);
+  world.set_angular_velocity(spun, -huge);
+  world.set_linear_velocity(spun, {0, huge});
+
+  world.step();
+  ASSERT_TRUE(all_finite(world));
+  const auto near = [&](const Vec2& v, const Vec2& expected) {
+    return (v - expected).norm() <= 1e-3 * limit;
+  };
+  EXPECT_TRUE(near(world.linear_velocity(fired), Vec2(limit, -limit) / std::sqrt(2.0)))
+      << world.linear_velocity(fired).transpose();
+  EXPECT_TRUE(near(world.linear_velocity(pushed), Vec2(-limit, 0)))
+      << world.linear_velocity(pushed).transpose();
+  EXPECT_TRUE(near(world.linear_velocity(struck), Vec2(0, limit)))
+      << world.linear_velocity(struck).transpose();
+  // The kinematic body turns an eighth of a turn per substep at most, and says so.
+  const Real h = world.def().time_step / world.def().substeps;
+  EXPECT_EQ(world.angular_velocity(spun), -0.25 * std::numbers::pi / h);
+  EXPECT_EQ(world.linear_velocity(spun), Vec2(0, limit));
+}
+
+// Every input in the snapshot-restore seed corpus, as that harness reads it (this build's
+// header put around the state, size and checksum made to fit; whole bytes when they start with
+// 'M'): refused with a SnapshotError, or a world that steps finite at 1 and 2 workers alike.
+// The inputs the harness found failing are refused by name.
+TEST(FuzzFindings, TheSnapshotRestoreCorpusIsRefusedOrStepsFinite) {
+  const std::filesystem::path corpus =
+      std::filesystem::path(MINK_FUZZ_CORPUS_DIR) / "snapshot_restore";
+  const std::vector<std::uint8_t> header = [] {
+    const std::vector<std::uint8_t> any = World().snapshot();
+    return std::vector<std::uint8_t>(any.begin(), any.begin() + 36);
+  }();
+  const std::vector<std::string> found_failing = {
+      "gravity-1e175", "fixed-contact-count", "body-reaching-beyond-the-world",
+      "a-hundred-million-substeps", "a-billion-broadphase-bands"};
+  int refused = 0, stepped = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(corpus)) {
+    SCOPED_TRACE(entry.path().filename().string());
+    std::ifstream in(entry.path(), std::ios::binary);
+    const std::vector<std::uint8_t> input((std::istreambuf_iterator<char>(in)), {});
+    std::vector<std::uint8_t> bytes = input;
+    if (input.empty() || input[0] != 'M') {
+      bytes = header;
+      bytes.insert(bytes.end(), input.begin(), input.end());
+      const std::uint64_t size = input.size();
+      const std::uint64_t checksum = hash_bytes(input);
+      std::memcpy(bytes.data() + 20, &size, sizeof size);
+      std::memcpy(bytes.data() + 28, &checksum, sizeof checksum);
+    }
+    const std::string name = entry.path().filename().string();
+    const bool must_refuse =
+        std::find(found_failing.begin(), found_failing.end(), name) != found_failing.end();
+    try {
+      World one = World::from_snapshot(bytes, 1);
+      World two = World::from_snapshot(bytes, 2);
+      EXPECT_FALSE(must_refuse);
+      for (int i = 0; i < 3; ++i) {
+        one.step();
+        two.step();
+      }
+      EXPECT_TRUE(all_finite(one));
+      EXPECT_EQ(one.state_hash(), two.state_hash());
+      ++stepped;
+    } catch (const SnapshotError&) {
+      ++refused;
+    }
+  }
+  EXPECT_GE(refused, static_cast<int>(found_failing.size()));
+  EXPECT_GE(stepped, 4);  // the scenes' own snapshots among the seeds
 }
 
 }  // namespace

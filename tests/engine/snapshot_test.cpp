@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <span>
 #include <string>
@@ -23,6 +25,16 @@ namespace {
 
 // A small world with a bit of everything a step keeps: a stack in contact, a pendulum on a
 // revolute joint, a sensor, a fast bullet, a body asleep, and a destroyed body (a free slot).
+// The bytes with their header's size and checksum made to fit the state after it (36 bytes of
+// header: magic, format version, fingerprint, size at byte 20, checksum at byte 28).
+std::vector<std::uint8_t> resealed(std::vector<std::uint8_t> bytes) {
+  const std::uint64_t size = bytes.size() - 36;
+  std::memcpy(bytes.data() + 20, &size, 8);
+  const std::uint64_t checksum = hash_bytes(std::span<const std::uint8_t>(bytes).subspan(36));
+  std::memcpy(bytes.data() + 28, &checksum, 8);
+  return bytes;
+}
+
 World small_world(int workers = 1) {
   WorldDef def;
   def.worker_count = workers;
@@ -322,11 +334,48 @@ TEST(Snapshot, ErrorsNameWhatIsWrong) {
   // past the end.
   bytes = snapshot;
   bytes.erase(bytes.end() - 3, bytes.end());
-  std::uint64_t size = bytes.size() - 36;
-  std::memcpy(bytes.data() + 20, &size, 8);
-  const std::uint64_t checksum = hash_bytes(std::span<const std::uint8_t>(bytes).subspan(36));
-  std::memcpy(bytes.data() + 28, &checksum, 8);
-  EXPECT_NE(message(bytes).find("at byte"), std::string::npos) << message(bytes);
+  EXPECT_NE(message(resealed(bytes)).find("at byte"), std::string::npos) << message(bytes);
+}
+
+// A state that passes its checksum is still refused when it holds a value the API refuses:
+// such values stepped into NaN (a gravity of 1e175 m/s^2 did within a step).
+TEST(Snapshot, ValuesTheApiRefusesAreRefusedBehindAValidChecksum) {
+  WorldDef def;
+  def.gravity = Vec2(0, -9.87654321);
+  World world(def);
+  const BodyId ground = world.create_body({});
+  ShapeDef ground_box = ShapeDef::box(20, 0.5);
+  ground_box.friction = 0.123456789;
+  world.create_shape(ground, ground_box);
+  test::add_box(world, {0, 1});
+  world.step();
+  const std::vector<std::uint8_t> snapshot = world.snapshot();
+  const std::uint64_t unchanged = world.state_hash();
+  // The snapshot with the one occurrence of `was` replaced by `now`, resealed.
+  const auto replaced = [&](Real was, Real now) {
+    std::vector<std::uint8_t> bytes = snapshot;
+    std::uint8_t pattern[sizeof(Real)];
+    std::memcpy(pattern, &was, sizeof was);
+    const auto at = std::search(bytes.begin() + 36, bytes.end(), pattern, pattern + sizeof was);
+    EXPECT_NE(at, bytes.end()) << was;
+    EXPECT_EQ(std::search(at + 1, bytes.end(), pattern, pattern + sizeof was), bytes.end()) << was;
+    std::memcpy(&*at, &now, sizeof now);
+    return resealed(std::move(bytes));
+  };
+  const auto message = [&](Real was, Real now) {
+    return test::error_of<SnapshotError>([&] { world.restore(replaced(was, now)); });
+  };
+  EXPECT_NE(message(-9.87654321, 1e175).find("gravity"), std::string::npos);
+  EXPECT_NE(message(0.123456789, -0.5).find("friction"), std::string::npos);
+  EXPECT_NE(message(0.123456789, std::numeric_limits<Real>::quiet_NaN()).find("non-finite"),
+            std::string::npos);
+  EXPECT_EQ(world.state_hash(), unchanged);
+  // A world that never stepped (its broadphase never built) restores too.
+  EXPECT_NO_THROW((void)World::from_snapshot(World().snapshot()));
+  // The same bytes with in-range values are taken.
+  world.restore(replaced(0.123456789, 0.25));
+  world.step();
+  EXPECT_TRUE(test::all_finite(world));
 }
 
 TEST(Snapshot, ARunSnapshotCarriesTheSchedule) {

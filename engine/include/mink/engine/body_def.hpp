@@ -21,6 +21,12 @@ std::string_view to_string(BodyType type) noexcept;
 /// turn the body's state into NaN. A shape, density or mass data that gives less is refused.
 inline constexpr Real min_mass_property = 1e-30;
 
+/// The farthest from the origin (m, on each axis) a body may be placed or a shape's point reach
+/// in its body's frame. Positions are doubles, whose resolution there is 0.125 m; farther out,
+/// sums of coordinates would overflow and the single-precision solver's squared distances
+/// between bodies would too (a body at -2e306 m turned a world NaN).
+inline constexpr Real max_world_coordinate = 1e15;
+
 /// Everything World::create_body needs; plain data. Units: metres, radians, seconds.
 struct BodyDef {
   BodyType type = BodyType::static_body;  ///< static unless set

@@ -5,6 +5,17 @@
 
 namespace mink {
 
+/// The largest magnitude a world setting (gravity per component, rates, speeds, lengths, the
+/// time step) or a body's gravity scale may have, and 1 / it the shortest time step: the solver
+/// works in single precision and multiplies and squares these, so larger ones would overflow
+/// it and turn the world NaN within a step (gravity of 1e175 m/s^2 did).
+inline constexpr Real max_setting_magnitude = 1e9;
+
+/// The most substeps a step, and joint passes a substep, may take: each costs solver memory
+/// and time per constraint, and a step of 10^8 substeps asked for gigabytes.
+inline constexpr int max_substeps = 1000;
+inline constexpr int max_joint_iterations = 1000;
+
 /// World settings. Defaults follow Box2D v3 where it has an equivalent (units: metres,
 /// kilograms, seconds).
 struct WorldDef {

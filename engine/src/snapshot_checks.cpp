@@ -1,0 +1,269 @@
+// The snapshot loader's checks (snapshot_checks.hpp).
+
+#include "snapshot_checks.hpp"
+
+#include <cmath>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "checks.hpp"
+#include "joint.hpp"
+#include "snapshot_io.hpp"
+
+namespace mink::detail {
+
+namespace {
+
+// Every index the step follows without checking must name a slot that exists: a snapshot
+// that passes its checksum but was made by hand is refused here rather than read out of range.
+void check_indices(const WorldState& w, ByteReader& in) {
+  const std::size_t bodies = w.bodies.size(), shapes = w.shapes.size();
+  const std::size_t joints = w.joints.size(), contacts = w.contacts.size();
+  const auto below = [&](std::size_t index, std::size_t bound, const char* what) {
+    if (index >= bound) in.fail(std::string(what) + " " + std::to_string(index) + " out of range");
+  };
+  const auto color_ok = [](std::uint8_t c) { return c <= kOverflowColor || c == kNoColor; };
+  for (std::size_t i = 0; i < bodies; ++i) {
+    const Body& b = w.bodies[i];
+    for (const std::uint32_t s : b.shapes) below(s, shapes, "a body's shape");
+    for (const std::uint32_t c : b.contacts) below(c, contacts, "a body's contact");
+    for (const std::uint32_t j : b.joints) below(j, joints, "a body's joint");
+  }
+  for (std::size_t i = 0; i < shapes; ++i) {
+    const Shape& s = w.shapes[i];
+    below(s.body, bodies, "a shape's body");
+    // A live shape's proxy, if it has one, is a live proxy that names it back.
+    if (s.alive && s.proxy != null_proxy &&
+        (!w.broadphase.is_proxy(s.proxy) || w.broadphase.user_data(s.proxy) != i)) {
+      in.fail("shape " + std::to_string(i) + "'s broadphase proxy " + std::to_string(s.proxy) +
+              " is not one of its own");
+    }
+  }
+  for (const Contact& c : w.contacts) {
+    below(c.body_a, bodies, "a contact's body");
+    below(c.body_b, bodies, "a contact's body");
+    below(c.shape_a, shapes, "a contact's shape");
+    below(c.shape_b, shapes, "a contact's shape");
+    if (!color_ok(c.color)) in.fail("a contact colour out of range");
+  }
+  for (const Joint& j : w.joints) {
+    if (j.body_count < 2 || j.body_count > 4) in.fail("a joint with a bad body count");
+    for (int k = 0; k < j.body_count; ++k) below(j.body[k], bodies, "a joint's body");
+    for (const std::uint32_t g : j.gear_joints) below(g, joints, "a gear's joint");
+    for (const std::uint32_t g : j.gears) below(g, joints, "a joint's gear");
+    if (!color_ok(j.color)) in.fail("a joint colour out of range");
+  }
+  // Each contact is listed once by each of its two bodies, a body lists only its own, and it
+  // counts those with something static or kinematic right: the step walks and edits the lists
+  // by these counts without looking further.
+  std::vector<std::uint32_t> listed(contacts, 0);
+  for (std::size_t i = 0; i < bodies; ++i) {
+    const Body& b = w.bodies[i];
+    std::uint32_t fixed = 0;
+    for (const std::uint32_t c : b.contacts) {
+      const Contact& contact = w.contacts[c];
+      if (contact.body_a != i && contact.body_b != i) {
+        in.fail("body " + std::to_string(i) + " lists contact " + std::to_string(c) +
+                ", which is not its own");
+      }
+      ++listed[c];
+      fixed += (contact.body_a == i ? contact.b_fixed : contact.a_fixed) ? 1 : 0;
+    }
+    if (fixed != b.fixed_contacts) {
+      in.fail("body " + std::to_string(i) + " counts " + std::to_string(b.fixed_contacts) +
+              " contacts with something fixed and lists " + std::to_string(fixed));
+    }
+  }
+  for (std::size_t c = 0; c < contacts; ++c) {
+    if (w.contacts[c].body_a == w.contacts[c].body_b || listed[c] != 2) {
+      in.fail("contact " + std::to_string(c) + " is not listed once by each of its two bodies");
+    }
+  }
+  for (const SensorState& s : w.sensors) below(s.shape, shapes, "a sensor shape");
+  for (const std::uint32_t i : w.awake_list) below(i, bodies, "an awake body");
+  for (const std::uint32_t i : w.newly_acting) below(i, contacts, "a contact waiting for a colour");
+  for (const std::uint32_t i : w.island_parent) below(i, bodies, "an island parent");
+}
+
+// Walks a record's fields as the snapshot does and notes whether every floating-point one is
+// finite. (Blocks of plain numbers go past unchecked; no record holds one of floats.)
+struct FiniteWalk {
+  static constexpr bool loading = false;
+  struct {
+    void raw(const void*, std::size_t) {}
+  } out;
+  bool finite = true;
+  template <typename T>
+  void operator()(const T& field) {
+    if constexpr (std::is_floating_point_v<T>) {
+      finite = finite && std::isfinite(field);
+    } else if constexpr (!std::is_arithmetic_v<T> && !std::is_enum_v<T>) {
+      using mink::io;  // the library types' (vectors, Vec2), which argument lookup misses here
+      io(*this, const_cast<T&>(field));
+    }
+  }
+  void count(std::size_t) {}
+};
+
+template <typename Record>
+bool all_finite(const Record& record) {
+  FiniteWalk walk;
+  walk(record);
+  return walk.finite;
+}
+
+bool unit(const Rotation& r) {
+  return std::abs(r.cos * r.cos + r.sin * r.sin - 1) <= Real(1e-6);
+}
+
+// What no API call leaves in a live body. Its thinnest extent is infinite while it has no
+// shape, and its continuous threshold may be infinite (never fast).
+void check_body(const Body& body, const std::string& what, ByteReader& in) {
+  Body finite_part = body;
+  finite_part.min_extent = 0;
+  finite_part.continuous_threshold = 0;
+  if (!all_finite(finite_part)) in.fail(what + " holds a non-finite value");
+  if (body.type > BodyType::dynamic) in.fail(what + " has no body type");
+  // Shape points and mass centres lie within max_world_coordinate of their body's origin,
+  // so its extent reaches at most a few times that far.
+  if (!within_world(body.center) || !within_world(body.origin) ||
+      !within_world(body.previous_origin) || !within_world(body.local_center) ||
+      body.extent > 4 * max_world_coordinate) {
+    in.fail(what + " lies or reaches beyond max_world_coordinate");
+  }
+  if (!unit(body.rotation) || !unit(body.previous_rotation)) {
+    in.fail(what + "'s rotation is not a rotation");
+  }
+  const Real non_negative[] = {body.inv_mass,
+                               body.inv_inertia,
+                               body.mass,
+                               body.inertia,
+                               body.extent,
+                               body.linear_damping,
+                               body.angular_damping,
+                               body.sleep_time,
+                               body.min_extent,
+                               body.continuous_threshold};
+  for (const Real v : non_negative) {
+    if (!(v >= 0)) in.fail(what + " has a negative mass, extent, damping or threshold");
+  }
+  // The solver inverts in single precision: set_mass_data refuses less than this.
+  if (body.inv_mass > 1 / min_mass_property || body.inv_inertia > 1 / min_mass_property) {
+    in.fail(what + "'s mass or rotational inertia is below min_mass_property");
+  }
+}
+
+void check_geometry(const ShapeGeometry& geometry, const std::string& what, ByteReader& in) {
+  std::visit(
+      [&](const auto& g) {
+        using G = std::decay_t<decltype(g)>;
+        if constexpr (std::is_same_v<G, Circle>) {
+          if (!(g.radius > 0)) in.fail(what + " is a circle without a positive radius");
+        } else if constexpr (std::is_same_v<G, Capsule>) {
+          if (!(g.radius > 0) || g.center1 == g.center2) {
+            in.fail(what + " is a capsule without a positive radius and two centres");
+          }
+        } else if constexpr (std::is_same_v<G, Segment>) {
+          if (g.point1 == g.point2) in.fail(what + " is a segment of one point");
+        } else if constexpr (std::is_same_v<G, ChainSegment>) {
+          if (g.segment.point1 == g.segment.point2) in.fail(what + " is a chain link of one point");
+        } else {
+          if (!(g.radius >= 0)) in.fail(what + " is a polygon with a negative radius");
+        }
+      },
+      geometry);
+}
+
+void check_shape(const Shape& shape, const std::string& what, ByteReader& in) {
+  if (!all_finite(shape)) in.fail(what + " holds a non-finite value");
+  if (shape.type > ShapeType::chain) in.fail(what + " has no shape type");
+  if (shape.algorithm > HullAlgorithm::monotone_chain) in.fail(what + " has no hull algorithm");
+  if (!(shape.density >= 0 && shape.friction >= 0 && shape.restitution >= 0)) {
+    in.fail(what + " has a negative density, friction or restitution");
+  }
+  if (!(shape.aabb.lower.x() <= shape.aabb.upper.x() &&
+        shape.aabb.lower.y() <= shape.aabb.upper.y())) {
+    in.fail(what + "'s bounding box is inside out");
+  }
+  if (!within_world(shape.aabb.lower) || !within_world(shape.aabb.upper)) {
+    in.fail(what + " reaches beyond max_world_coordinate");
+  }
+  check_geometry(shape.geometry, what, in);
+  try {
+    check_shape_mass(shape.geometry, shape.density, what);
+  } catch (const Error& e) {
+    in.fail(e.what());
+  }
+}
+
+// A joint's definition passes create_joint's checks; its state is finite. Break limits may be
+// infinite (never breaks).
+void check_joint(const Joint& joint, const std::string& what, ByteReader& in) {
+  try {
+    check_joint_def(def_of(joint));
+  } catch (const Error& e) {
+    in.fail(what + ": " + e.what());
+  }
+  Joint finite_part = joint;
+  base(finite_part).break_force = 0;
+  base(finite_part).break_torque = 0;
+  if (!all_finite(finite_part)) in.fail(what + " holds a non-finite value");
+}
+
+bool unit(const Vec2& v) {
+  return std::abs(v.squaredNorm() - 1) <= Real(1e-6);
+}
+
+// A contact's points and cached poses lie in the world, its normals are unit vectors: the
+// solver's lever arms and the manifold reuse take them as they are.
+void check_contact(const Contact& c, const std::string& what, ByteReader& in) {
+  if (!all_finite(c) || !(c.friction >= 0 && c.restitution >= 0)) {
+    in.fail(what + " holds a non-finite or negative value");
+  }
+  const Manifold& m = c.manifold;
+  bool in_world = within_world(c.approach_point) && within_world(c.cache.relative.position) &&
+                  unit(c.cache.relative.rotation);
+  for (int k = 0; k < 2; ++k) {
+    in_world = in_world && within_world(m.points[k].point) &&
+               std::abs(m.points[k].separation) <= max_world_coordinate &&
+               within_world(c.cache.on_a[k]) && within_world(c.cache.on_b[k]);
+  }
+  if (!in_world) in.fail(what + " reaches beyond max_world_coordinate");
+  if ((m.point_count > 0 && !unit(m.normal)) || (c.cache.valid && !unit(c.cache.normal))) {
+    in.fail(what + "'s normal is not a unit vector");
+  }
+}
+
+void check_values(const WorldState& w, ByteReader& in) {
+  const Real clock[] = {w.time, w.accumulator, w.dt};
+  for (const Real v : clock) {
+    if (!std::isfinite(v) || v < 0) in.fail("the world's clock is not finite and non-negative");
+  }
+  // The last step's length and substeps (none yet: 0 and 1), as step() takes them.
+  if (w.substeps < 1 || w.substeps > max_substeps || w.dt > max_setting_magnitude ||
+      (w.dt != 0 && w.dt < 1 / max_setting_magnitude)) {
+    in.fail("the last step's length or substeps are out of range");
+  }
+  for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+    if (w.bodies[i].alive) check_body(w.bodies[i], "body " + std::to_string(i), in);
+  }
+  for (std::size_t i = 0; i < w.shapes.size(); ++i) {
+    if (w.shapes[i].alive) check_shape(w.shapes[i], "shape " + std::to_string(i), in);
+  }
+  for (std::size_t i = 0; i < w.joints.size(); ++i) {
+    if (w.joints[i].alive) check_joint(w.joints[i], "joint " + std::to_string(i), in);
+  }
+  for (std::size_t i = 0; i < w.contacts.size(); ++i) {
+    check_contact(w.contacts[i], "contact " + std::to_string(i), in);
+  }
+}
+
+}  // namespace
+
+void check_snapshot_state(const WorldState& w, ByteReader& in) {
+  check_indices(w, in);
+  check_values(w, in);
+}
+
+}  // namespace mink::detail
