@@ -493,6 +493,10 @@ void World::set_mass_data(BodyId id, const MassData& mass) {
           "set_mass_data of " + to_string(id) +
               ": mass and inertia must be finite and non-negative, the centre finite and within "
               "max_world_coordinate");
+  require(mass.mass <= max_mass_property && mass.rotational_inertia <= max_mass_property,
+          "set_mass_data of " + to_string(id) + ": mass " + detail::exact_number(mass.mass) +
+              " and rotational inertia " + detail::exact_number(mass.rotational_inertia) +
+              " must not exceed max_mass_property (1e30)");
   if ((mass.mass > 0 && mass.mass < min_mass_property) ||
       (mass.rotational_inertia > 0 && mass.rotational_inertia < min_mass_property)) {
     throw InvalidArgumentError("set_mass_data of " + to_string(id) + ": mass " +

@@ -180,6 +180,12 @@ void detail::check_shape_mass(const ShapeGeometry& geometry, Real density,
                               const std::string& what) {
   if (density == 0) return;
   const MassData m = compute_mass(geometry, density);
+  if (!(m.mass <= max_mass_property && m.rotational_inertia <= max_mass_property)) {
+    throw InvalidArgumentError(what + ": density " + exact_number(density) + " gives mass " +
+                               exact_number(m.mass) + " kg and rotational inertia " +
+                               exact_number(m.rotational_inertia) +
+                               " kg m^2, beyond max_mass_property (1e30)");
+  }
   if (m.mass > 0 && (m.mass < min_mass_property || m.rotational_inertia < min_mass_property)) {
     throw InvalidArgumentError(what + ": density " + std::to_string(density) + " gives mass " +
                                exact_number(m.mass) + " kg and rotational inertia " +

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "checks.hpp"
@@ -135,18 +136,20 @@ void check_body(const Body& body, const std::string& what, ByteReader& in) {
   if (!unit(body.rotation) || !unit(body.previous_rotation)) {
     in.fail(what + "'s rotation is not a rotation");
   }
-  const Real non_negative[] = {body.inv_mass,
-                               body.inv_inertia,
-                               body.mass,
-                               body.inertia,
-                               body.extent,
-                               body.linear_damping,
-                               body.angular_damping,
-                               body.sleep_time,
-                               body.min_extent,
-                               body.continuous_threshold};
-  for (const Real v : non_negative) {
-    if (!(v >= 0)) in.fail(what + " has a negative mass, extent, damping or threshold");
+  // (Not its rotational inertia: taken about the origin less the parallel axis term, it can
+  // round below zero, and then the body does not turn.)
+  const std::pair<const char*, Real> non_negative[] = {
+      {"inverse mass", body.inv_mass},
+      {"inverse inertia", body.inv_inertia},
+      {"mass", body.mass},
+      {"extent", body.extent},
+      {"linear damping", body.linear_damping},
+      {"angular damping", body.angular_damping},
+      {"sleep time", body.sleep_time},
+      {"thinnest extent", body.min_extent},
+      {"continuous threshold", body.continuous_threshold}};
+  for (const auto& [name, v] : non_negative) {
+    if (!(v >= 0)) in.fail(what + " has a negative " + name + ", " + exact_number(v));
   }
   // The solver inverts in single precision: set_mass_data refuses less than this.
   if (body.inv_mass > 1 / min_mass_property || body.inv_inertia > 1 / min_mass_property) {

@@ -397,5 +397,27 @@ TEST(FuzzFindings, TheSnapshotRestoreCorpusIsRefusedOrStepsFinite) {
   EXPECT_GE(stepped, 4);  // the scenes' own snapshots among the seeds
 }
 
+// A density of 1e300 gave a shape an infinite mass (the World API fuzzer, drawing such values);
+// a shape's mass and rotational inertia, and set_mass_data's, now stay within
+// max_mass_property.
+TEST(FuzzFindings, MassTooLargeToRepresentIsRefused) {
+  World world;
+  const BodyId box = test::add_box(world, {0, 1});
+  ShapeDef heavy = ShapeDef::circle(0.5);
+  heavy.density = 1e300;
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.create_shape(box, heavy);
+            }).find("max_mass_property"),
+            std::string::npos);
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.set_mass_data(box, MassData{1e31, Vec2(0, 0), 1});
+            }).find("max_mass_property"),
+            std::string::npos);
+  EXPECT_EQ(world.body_shapes(box).size(), 1u);
+  heavy.density = 1e29;  // a circle of area 0.79 m^2: 7.9e28 kg
+  world.create_shape(box, heavy);
+  expect_steps_finite(world, 30);
+}
+
 }  // namespace
 }  // namespace mink

@@ -20,6 +20,10 @@ std::string_view to_string(BodyType type) noexcept;
 /// solver works with their inverses in single precision: smaller ones would overflow there and
 /// turn the body's state into NaN. A shape, density or mass data that gives less is refused.
 inline constexpr Real min_mass_property = 1e-30;
+/// The largest mass (kg) and rotational inertia (kg m^2) one shape or World::set_mass_data may
+/// give: beyond it, sums over shapes and their lever arms could overflow (a density of 1e300
+/// gave an infinite mass).
+inline constexpr Real max_mass_property = 1e30;
 
 /// The farthest from the origin (m, on each axis) a body may be placed or a shape's point reach
 /// in its body's frame. Positions are doubles, whose resolution there is 0.125 m; farther out,
