@@ -36,7 +36,7 @@ void check_body_def(const BodyDef& def) {
           "BodyDef.linear_damping must be finite and non-negative");
   require(std::isfinite(def.angular_damping) && def.angular_damping >= 0,
           "BodyDef.angular_damping must be finite and non-negative");
-  require(std::isfinite(def.gravity_scale) && std::abs(def.gravity_scale) <= max_setting_magnitude,
+  require(within_settings(def.gravity_scale),
           "BodyDef.gravity_scale must lie within max_setting_magnitude (1e9), got " +
               detail::exact_number(def.gravity_scale));
   require(!std::isnan(def.continuous_threshold) && def.continuous_threshold >= 0,

@@ -114,8 +114,11 @@ bool all_finite(const Record& record) {
   return walk.finite;
 }
 
+bool unit(const Vec2& v) {
+  return std::abs(v.squaredNorm() - 1) <= Real(1e-6);
+}
 bool unit(const Rotation& r) {
-  return std::abs(r.cos * r.cos + r.sin * r.sin - 1) <= Real(1e-6);
+  return unit(Vec2(r.cos, r.sin));
 }
 
 // What no API call leaves in a live body. Its thinnest extent is infinite while it has no
@@ -214,10 +217,6 @@ void check_joint(const Joint& joint, const std::string& what, ByteReader& in) {
   if (!all_finite(finite_part)) in.fail(what + " holds a non-finite value");
 }
 
-bool unit(const Vec2& v) {
-  return std::abs(v.squaredNorm() - 1) <= Real(1e-6);
-}
-
 // A contact's points and cached poses lie in the world, its normals are unit vectors: the
 // solver's lever arms and the manifold reuse take them as they are.
 void check_contact(const Contact& c, const std::string& what, ByteReader& in) {
@@ -243,10 +242,13 @@ void check_values(const WorldState& w, ByteReader& in) {
   for (const Real v : clock) {
     if (!std::isfinite(v) || v < 0) in.fail("the world's clock is not finite and non-negative");
   }
-  // The last step's length and substeps (none yet: 0 and 1), as step() takes them.
-  if (w.substeps < 1 || w.substeps > max_substeps || w.dt > max_setting_magnitude ||
-      (w.dt != 0 && w.dt < 1 / max_setting_magnitude)) {
-    in.fail("the last step's length or substeps are out of range");
+  // The last step's length and substeps as step() takes them (none yet: 0 and 1).
+  if (w.dt != 0 || w.substeps != 1) {
+    try {
+      check_step_length(w.dt, w.substeps, "the last step's ");
+    } catch (const Error& e) {
+      in.fail(e.what());
+    }
   }
   for (std::size_t i = 0; i < w.bodies.size(); ++i) {
     if (w.bodies[i].alive) check_body(w.bodies[i], "body " + std::to_string(i), in);

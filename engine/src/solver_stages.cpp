@@ -13,8 +13,10 @@ namespace mink {
 namespace {
 
 // `v` scaled to length `limit` when longer (hypot, as the squares of 1e300 would overflow). An
-// infinite component (a force of 1e300 N on a body of min_mass_property) points the way.
+// infinite component (a force of 1e300 N on a body of min_mass_property) points the way. Most
+// bodies are within the limit, which the squared length tells cheaply.
 Vec2 clamp_length(Vec2 v, Real limit) {
+  if (v.squaredNorm() <= limit * limit) return v;
   if (std::isinf(v.x()) || std::isinf(v.y())) {
     v = Vec2(std::isinf(v.x()) ? std::copysign(Real(1), v.x()) : 0,
              std::isinf(v.y()) ? std::copysign(Real(1), v.y()) : 0);

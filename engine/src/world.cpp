@@ -30,10 +30,7 @@ std::string to_string(ShapeId id) {
 namespace detail {
 
 void check_world_def(const WorldDef& def) {
-  require(std::isfinite(def.time_step) && def.time_step > 0,
-          "WorldDef.time_step must be positive and finite, got " + std::to_string(def.time_step));
-  require(def.substeps >= 1 && def.substeps <= max_substeps,
-          "WorldDef.substeps must be 1..max_substeps (1000), got " + std::to_string(def.substeps));
+  check_step_length(def.time_step, def.substeps, "WorldDef.");
   require(std::isfinite(def.contact_hertz) && def.contact_hertz >= 0,
           "WorldDef.contact_hertz must be finite and non-negative");
   require(std::isfinite(def.contact_damping_ratio) && def.contact_damping_ratio >= 0,
@@ -68,7 +65,6 @@ void check_world_def(const WorldDef& def) {
           "WorldDef.task_system needs both enqueue and finish, or neither");
   check_gravity(def.gravity, "WorldDef.gravity");
   const std::pair<const char*, Real> settings[] = {
-      {"time_step", def.time_step},
       {"contact_hertz", def.contact_hertz},
       {"contact_damping_ratio", def.contact_damping_ratio},
       {"joint_hertz", def.joint_hertz},
@@ -81,20 +77,25 @@ void check_world_def(const WorldDef& def) {
       {"manifold_reuse_distance", def.manifold_reuse_distance},
   };
   for (const auto& [name, value] : settings) {
-    require(std::abs(value) <= max_setting_magnitude,
-            std::string("WorldDef.") + name + " must not exceed max_setting_magnitude (1e9), got " +
-                exact_number(value));
+    require(within_settings(value), std::string("WorldDef.") + name +
+                                        " must not exceed max_setting_magnitude (1e9), got " +
+                                        exact_number(value));
   }
-  require(def.time_step >= 1 / max_setting_magnitude,
-          "WorldDef.time_step must be at least 1 / max_setting_magnitude (1e-9 s), got " +
-              exact_number(def.time_step));
+}
+
+void check_step_length(Real time_step, int substeps, const std::string& what) {
+  require(std::isfinite(time_step) && time_step >= 1 / max_setting_magnitude &&
+              time_step <= max_setting_magnitude,
+          what + "time_step must be 1e-9..1e9 s (max_setting_magnitude), got " +
+              exact_number(time_step));
+  require(substeps >= 1 && substeps <= max_substeps,
+          what + "substeps must be 1..max_substeps (1000), got " + std::to_string(substeps));
 }
 
 void check_gravity(const Vec2& gravity, const std::string& what) {
-  require(finite(gravity), what + " must be finite");
-  require(std::abs(gravity.x()) <= max_setting_magnitude &&
-              std::abs(gravity.y()) <= max_setting_magnitude,
-          what + " must lie within max_setting_magnitude (1e9 m/s^2) on each axis, got (" +
+  require(within_settings(gravity),
+          what +
+              " must be finite and within max_setting_magnitude (1e9 m/s^2) on each axis, got (" +
               exact_number(gravity.x()) + ", " + exact_number(gravity.y()) + ")");
 }
 
@@ -143,12 +144,7 @@ void World::step() {
 
 void World::step(Real time_step, int substeps) {
   const detail::RecordScope record(*this, detail::Call::step_with, time_step, substeps);
-  require(std::isfinite(time_step) && time_step >= 1 / max_setting_magnitude &&
-              time_step <= max_setting_magnitude,
-          "step: time_step must be 1e-9..1e9 s (max_setting_magnitude), got " +
-              detail::exact_number(time_step));
-  require(substeps >= 1 && substeps <= max_substeps,
-          "step: substeps must be 1..max_substeps (1000), got " + std::to_string(substeps));
+  detail::check_step_length(time_step, substeps, "step: ");
   run_step(true, time_step, substeps);
 }
 

@@ -24,6 +24,9 @@ namespace mink {
 namespace detail {
 // Throws InvalidArgumentError naming the first bad field (world.cpp).
 void check_world_def(const WorldDef& def);
+// A step's length and substeps as step() takes them: 1e-9..1e9 s, 1..max_substeps; `what`
+// starts the message.
+void check_step_length(Real time_step, int substeps, const std::string& what);
 // Finite and within max_setting_magnitude on each axis; `what` names it in the message.
 void check_gravity(const Vec2& gravity, const std::string& what);
 }  // namespace detail

@@ -370,10 +370,7 @@ TEST(FuzzFindings, TheSnapshotRestoreCorpusIsRefusedOrStepsFinite) {
     if (input.empty() || input[0] != 'M') {
       bytes = header;
       bytes.insert(bytes.end(), input.begin(), input.end());
-      const std::uint64_t size = input.size();
-      const std::uint64_t checksum = hash_bytes(input);
-      std::memcpy(bytes.data() + 20, &size, sizeof size);
-      std::memcpy(bytes.data() + 28, &checksum, sizeof checksum);
+      bytes = test::resealed(std::move(bytes));
     }
     const std::string name = entry.path().filename().string();
     const bool must_refuse =

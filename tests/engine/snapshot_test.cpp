@@ -25,16 +25,6 @@ namespace {
 
 // A small world with a bit of everything a step keeps: a stack in contact, a pendulum on a
 // revolute joint, a sensor, a fast bullet, a body asleep, and a destroyed body (a free slot).
-// The bytes with their header's size and checksum made to fit the state after it (36 bytes of
-// header: magic, format version, fingerprint, size at byte 20, checksum at byte 28).
-std::vector<std::uint8_t> resealed(std::vector<std::uint8_t> bytes) {
-  const std::uint64_t size = bytes.size() - 36;
-  std::memcpy(bytes.data() + 20, &size, 8);
-  const std::uint64_t checksum = hash_bytes(std::span<const std::uint8_t>(bytes).subspan(36));
-  std::memcpy(bytes.data() + 28, &checksum, 8);
-  return bytes;
-}
-
 World small_world(int workers = 1) {
   WorldDef def;
   def.worker_count = workers;
@@ -334,7 +324,7 @@ TEST(Snapshot, ErrorsNameWhatIsWrong) {
   // past the end.
   bytes = snapshot;
   bytes.erase(bytes.end() - 3, bytes.end());
-  EXPECT_NE(message(resealed(bytes)).find("at byte"), std::string::npos) << message(bytes);
+  EXPECT_NE(message(test::resealed(bytes)).find("at byte"), std::string::npos) << message(bytes);
 }
 
 // A state that passes its checksum is still refused when it holds a value the API refuses:
@@ -360,7 +350,7 @@ TEST(Snapshot, ValuesTheApiRefusesAreRefusedBehindAValidChecksum) {
     EXPECT_NE(at, bytes.end()) << was;
     EXPECT_EQ(std::search(at + 1, bytes.end(), pattern, pattern + sizeof was), bytes.end()) << was;
     std::memcpy(&*at, &now, sizeof now);
-    return resealed(std::move(bytes));
+    return test::resealed(std::move(bytes));
   };
   const auto message = [&](Real was, Real now) {
     return test::error_of<SnapshotError>([&] { world.restore(replaced(was, now)); });

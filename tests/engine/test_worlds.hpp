@@ -4,11 +4,14 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "mink/byte_stream.hpp"
 #include "mink/engine/scene.hpp"
 #include "mink/engine/world.hpp"
 #include "mink/error.hpp"
@@ -160,6 +163,16 @@ std::pair<World, World> stepped_twins(int base, int steps, Change&& change) {
     second.step();
   }
   return {std::move(first), std::move(second)};
+}
+
+// Snapshot bytes with their header's size and checksum made to fit the state after it (36
+// bytes of header: magic, format version, fingerprint, size at byte 20, checksum at byte 28).
+inline std::vector<std::uint8_t> resealed(std::vector<std::uint8_t> bytes) {
+  const std::uint64_t size = bytes.size() - 36;
+  std::memcpy(bytes.data() + 20, &size, sizeof size);
+  const std::uint64_t checksum = hash_bytes(std::span<const std::uint8_t>(bytes).subspan(36));
+  std::memcpy(bytes.data() + 28, &checksum, sizeof checksum);
+  return bytes;
 }
 
 }  // namespace mink::test
