@@ -16,8 +16,8 @@ BruteForceBroadphase::BruteForceBroadphase(Real margin) : store_(Fattening{margi
 BruteForceBroadphase::BruteForceBroadphase(const Fattening& fattening) : store_(fattening) {}
 
 ProxyId BruteForceBroadphase::create_proxy(const Aabb& tight, ProxyKind kind,
-                                           std::uint64_t user_data) {
-  return store_.create(tight, kind, user_data);
+                                           std::uint64_t user_data, Real size) {
+  return store_.create(tight, kind, user_data, size);
 }
 
 void BruteForceBroadphase::destroy_proxy(ProxyId id) {
@@ -66,10 +66,10 @@ void BruteForceBroadphase::query(const Aabb& box, std::vector<ProxyId>& out) con
   }
 }
 
-void BruteForceBroadphase::query_static(const Aabb& box, std::vector<ProxyId>& out) const {
-  ProxyStore::check_box(box, "query_static");
+void BruteForceBroadphase::query_fixed(const Aabb& box, std::vector<ProxyId>& out) const {
+  ProxyStore::check_box(box, "query_fixed");
   for (ProxyId id = 0; id < store_.id_bound(); ++id) {
-    if (store_.alive(id) && store_.is_static(id) && store_.fat(id).overlaps(box)) out.push_back(id);
+    if (store_.alive(id) && store_.is_fixed(id) && store_.fat(id).overlaps(box)) out.push_back(id);
   }
 }
 

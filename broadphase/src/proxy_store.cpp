@@ -54,13 +54,17 @@ ProxyStore::ProxyStore(const Fattening& fattening) : fattening_(fattening) {
   }
 }
 
-ProxyId ProxyStore::create(const Aabb& tight, ProxyKind kind, std::uint64_t user_data) {
+ProxyId ProxyStore::create(const Aabb& tight, ProxyKind kind, std::uint64_t user_data, Real size) {
   check_box(tight, "create_proxy");
-  if (kind != ProxyKind::static_body && kind != ProxyKind::moving) {
+  if (size != kSizeOfBox && !(std::isfinite(size) && size >= 0)) {
+    throw InvalidArgumentError("create_proxy: size " + std::to_string(size) +
+                               " is neither finite and non-negative nor kSizeOfBox");
+  }
+  if (kind != ProxyKind::static_body && kind != ProxyKind::moving && kind != ProxyKind::kinematic) {
     throw InvalidArgumentError("create_proxy: unknown proxy kind " +
                                std::to_string(static_cast<int>(kind)));
   }
-  const Aabb fat = fattened(tight, Vec2::Zero(), "create_proxy");
+  const Aabb fat = fattened(tight, Vec2::Zero(), size, "create_proxy");
   ProxyId id;
   if (!free_ids_.empty()) {
     id = free_ids_.back();
@@ -71,12 +75,14 @@ ProxyId ProxyStore::create(const Aabb& tight, ProxyKind kind, std::uint64_t user
     fat_.emplace_back();
     last_lower_.emplace_back();
     kind_.push_back(kind);
+    size_.push_back(kSizeOfBox);
     user_data_.push_back(0);
     alive_.push_back(0);
   }
   fat_[id] = fat;
   last_lower_[id] = tight.lower;
   kind_[id] = kind;
+  size_[id] = size;
   user_data_[id] = user_data;
   alive_[id] = 1;
   ++count_;
@@ -103,14 +109,16 @@ bool ProxyStore::move(ProxyId id, const Aabb& tight) {
   const Vec2 step = tight.lower - last_lower_[id];
   last_lower_[id] = tight.lower;
   if (fat_[id].contains(tight)) return false;
-  fat_[id] = fattened(tight, step, "move_proxy");
+  fat_[id] = fattened(tight, step, size_[id], "move_proxy");
   return true;
 }
 
-Aabb ProxyStore::fattened(const Aabb& tight, const Vec2& step, std::string_view operation) const {
+Aabb ProxyStore::fattened(const Aabb& tight, const Vec2& step, Real size,
+                          std::string_view operation) const {
   Real margin = fattening_.margin;
   if (std::isfinite(fattening_.size_fraction)) {
-    margin = std::min(margin, fattening_.size_fraction * 0.5 * (tight.upper - tight.lower).norm());
+    const Real measure = size != kSizeOfBox ? size : 0.5 * (tight.upper - tight.lower).norm();
+    margin = std::min(margin, fattening_.size_fraction * measure);
   }
   Aabb fat = tight.fattened(margin);
   // Reach ahead along the last step, so a steadily moving body keeps its box for longer. A
@@ -149,6 +157,7 @@ void ProxyStore::fields(Archive& archive) {
   archive(fat_);
   archive(last_lower_);
   archive(kind_);
+  archive(size_);
   archive(user_data_);
   archive(alive_);
   archive(free_ids_);
@@ -158,9 +167,21 @@ void ProxyStore::fields(Archive& archive) {
   count_ = static_cast<std::size_t>(count);
   if constexpr (Archive::loading) {
     const std::size_t n = alive_.size();
-    if (fat_.size() != n || last_lower_.size() != n || kind_.size() != n ||
+    if (fat_.size() != n || last_lower_.size() != n || kind_.size() != n || size_.size() != n ||
         user_data_.size() != n) {
       archive.in.fail("broadphase proxy arrays of different lengths");
+    }
+    for (const ProxyKind kind : kind_) {
+      if (kind != ProxyKind::static_body && kind != ProxyKind::moving &&
+          kind != ProxyKind::kinematic) {
+        archive.in.fail("a broadphase proxy of unknown kind " +
+                        std::to_string(static_cast<int>(kind)));
+      }
+    }
+    for (const Real size : size_) {
+      if (size != kSizeOfBox && !(std::isfinite(size) && size >= 0)) {
+        archive.in.fail("a broadphase proxy of size " + std::to_string(size));
+      }
     }
     for (const ProxyId id : free_ids_) {
       if (id >= n) archive.in.fail("a free proxy id beyond the proxies");

@@ -57,8 +57,9 @@ SweepAndPrune::SweepAndPrune(Real margin) : store_(Fattening{margin}) {}
 
 SweepAndPrune::SweepAndPrune(const Fattening& fattening) : store_(fattening) {}
 
-ProxyId SweepAndPrune::create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data) {
-  const ProxyId id = store_.create(tight, kind, user_data);
+ProxyId SweepAndPrune::create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data,
+                                    Real size) {
+  const ProxyId id = store_.create(tight, kind, user_data, size);
   if (id >= slot_.size()) {
     slot_.resize(id + 1, kNoSlot);
     committed_.resize(id + 1);
@@ -117,7 +118,8 @@ SweepAndPrune::Entry SweepAndPrune::make_entry(ProxyId id, const Aabb& box) cons
   Entry entry = oriented(box);
   entry.key = make_key(band_of(entry.lo1), sweep_key(entry.lo0));
   entry.id = id;
-  entry.is_static = static_cast<std::uint32_t>(store_.is_static(id));
+  entry.is_static = static_cast<std::uint16_t>(store_.is_static(id));
+  entry.is_fixed = static_cast<std::uint16_t>(store_.is_fixed(id));
   return entry;
 }
 
@@ -567,13 +569,13 @@ void SweepAndPrune::query(const Aabb& box, std::vector<ProxyId>& out) const {
   }
 }
 
-void SweepAndPrune::query_static(const Aabb& box, std::vector<ProxyId>& out) const {
-  ProxyStore::check_box(box, "query_static");
+void SweepAndPrune::query_fixed(const Aabb& box, std::vector<ProxyId>& out) const {
+  ProxyStore::check_box(box, "query_fixed");
   sweep(oriented(box), [&](const Entry& e) {
-    if (e.is_static != 0 && touched_[e.id] == 0) out.push_back(e.id);
+    if (e.is_fixed != 0 && touched_[e.id] == 0) out.push_back(e.id);
   });
   for (const ProxyId id : touched_ids_) {
-    if ((touched_[id] & kDestroyed) == 0 && store_.is_static(id) && store_.fat(id).overlaps(box)) {
+    if ((touched_[id] & kDestroyed) == 0 && store_.is_fixed(id) && store_.fat(id).overlaps(box)) {
       out.push_back(id);
     }
   }
@@ -604,6 +606,7 @@ void SweepAndPrune::fields(Archive& archive) {
       archive(e.hi1);
       archive(e.id);
       archive(e.is_static);
+      archive(e.is_fixed);
     }
   };
   if constexpr (Archive::loading) {

@@ -302,7 +302,7 @@ void World::set_transform(BodyId id, const Vec2& position, Real angle) {
   b.center = b.origin + b.rotation.apply(b.local_center);
   for (std::uint32_t s : b.shapes) {
     detail::Shape& shape = w.shapes[s];
-    w.update_shape_aabb(shape, b, 0);
+    w.update_shape_aabb(shape, b);
     if (shape.proxy != null_proxy) w.broadphase.move_proxy(shape.proxy, shape.aabb);
   }
   for (std::uint32_t s : b.shapes) w.update_seams(s, false);

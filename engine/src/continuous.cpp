@@ -310,9 +310,14 @@ void WorldState::solve_continuous() {
           add_if_met(a_is_fast ? contact.shape_b : contact.shape_a);
         }
       } else {
-        // Rare: a body that left its broadphase boxes, or a bullet.
+        // A body that left its broadphase boxes (a fast body mostly has: they are fattened by
+        // a few centimetres only), or a bullet, which meets dynamic shapes too.
         proxies.clear();
-        broadphase.query(fast.box, proxies);
+        if (fast.bullet) {
+          broadphase.query(fast.box, proxies);
+        } else {
+          broadphase.query_fixed(fast.box, proxies);
+        }
         for (const ProxyId proxy : proxies) {
           const auto index = static_cast<std::uint32_t>(broadphase.user_data(proxy));
           if (index >= shapes.size()) continue;
@@ -374,7 +379,7 @@ void WorldState::solve_continuous() {
     b.origin = pose.position;
     b.rotation = pose.rotation;
     b.center = b.origin + b.rotation.apply(b.local_center);
-    for (const std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b, dt);
+    for (const std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b);
   }
   counters.continuous_hits = continuous.hits;
 }

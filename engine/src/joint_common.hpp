@@ -92,6 +92,9 @@ inline Rotation delta_rotation(const SolverBody& b) {
 inline Real delta_angle(const SolverBody& b) {
   constexpr Real two_pi = 2 * std::numbers::pi;
   const Real exact = std::atan2(b.qs, b.qc);
+  // Turned less than a quarter turn (most bodies, every substep): the principal angle is the
+  // turn, and counting whole turns (a division and a rounding) would add zero.
+  if (std::abs(b.turn) <= Real{1.5}) return exact;
   return exact + two_pi * std::round((b.turn - exact) / two_pi);
 }
 

@@ -44,17 +44,19 @@ void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bo
   if (joint.angle_rows) {
     const RevoluteJointDef& def = joint.def;
     // The angle only where a row needs it (two arc tangents a substep, for every joint of a
-    // large net otherwise).
-    const auto angle = [&] { return frame.coordinate_a + (delta_angle(b) - delta_angle(a)); };
+    // large net otherwise), once: the rows change velocities, not the angle.
+    const bool needs_angle = def.spring.enabled || def.limit.enabled;
+    const Real angle =
+        needs_angle ? frame.coordinate_a + (delta_angle(b) - delta_angle(a)) : Real{0};
     if (def.spring.enabled) {
       solve_angular_spring(a, b, frame, joint.axial_mass, joint.spring_soft,
-                           angle() - def.spring.target, joint.spring_impulse);
+                           angle - def.spring.target, joint.spring_impulse);
     }
     if (def.motor.enabled) {
       solve_angular_motor(a, b, frame, joint.axial_mass, def.motor, joint.motor_impulse);
     }
     if (def.limit.enabled) {
-      solve_angular_limits(a, b, frame, joint.axial_mass, angle(), def.limit, use_bias,
+      solve_angular_limits(a, b, frame, joint.axial_mass, angle, def.limit, use_bias,
                            joint.lower_impulse, joint.upper_impulse);
     }
   }

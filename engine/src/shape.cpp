@@ -77,13 +77,24 @@ Real shape_min_extent(const ShapeGeometry& geometry) {
   return std::visit(Visitor{}, geometry);
 }
 
+Real broadphase_size(const ShapeGeometry& geometry) {
+  struct Visitor {
+    Real operator()(const Circle& c) const { return c.radius; }
+    Real operator()(const Capsule& c) const {
+      return 0.5 * (c.center2 - c.center1).norm() + c.radius;
+    }
+    Real operator()(const Segment& s) const { return 0.5 * (s.point2 - s.point1).norm(); }
+    Real operator()(const ChainSegment& c) const { return (*this)(c.segment); }
+    Real operator()(const RoundedPolygon& p) const { return p.hull.radius(); }
+  };
+  return std::visit(Visitor{}, geometry);
+}
+
 }  // namespace detail
 
 // The box the broadphase sees: the shape at the current pose grown by the speculative
-// distance, and stretched along the body's motion over the next `step` where that motion
-// outruns the broadphase's own margin (which already finds pairs that close that much), so
-// pairs exist before fast shapes meet.
-void WorldState::update_shape_aabb(Shape& s, const Body& b, Real step) {
+// distance.
+void WorldState::update_shape_aabb(Shape& s, const Body& b) {
   const Pose pose = b.pose();
   const Real c = pose.rotation.cos, sn = pose.rotation.sin;
   Real lx = 0, ly = 0, ux = 0, uy = 0;
@@ -101,25 +112,19 @@ void WorldState::update_shape_aabb(Shape& s, const Body& b, Real step) {
     }
   });
   const Real speculative = detail::shape_radius(s.geometry) + 4 * def.linear_slop;
-  const Aabb held{Vec2(pose.position.x() + lx - speculative, pose.position.y() + ly - speculative),
-                  Vec2(pose.position.x() + ux + speculative, pose.position.y() + uy + speculative)};
-  const Real covered = detail::broadphase_margin(held);
-  const auto beyond = [&](Real reach) {
-    return reach > covered ? reach - covered : reach < -covered ? reach + covered : Real{0};
-  };
-  const Real turn = beyond(step * std::abs(b.angular_velocity) * b.extent);
-  const Real sx = beyond(step * b.velocity.x()), sy = beyond(step * b.velocity.y());
-  s.aabb.lower = held.lower - Vec2(turn - std::min(sx, Real{0}), turn - std::min(sy, Real{0}));
-  s.aabb.upper = held.upper + Vec2(turn + std::max(sx, Real{0}), turn + std::max(sy, Real{0}));
+  s.aabb.lower = Vec2(pose.position.x() + lx - speculative, pose.position.y() + ly - speculative);
+  s.aabb.upper = Vec2(pose.position.x() + ux + speculative, pose.position.y() + uy + speculative);
 }
 
 void WorldState::create_proxy(std::uint32_t shape_index) {
   Shape& s = shapes[shape_index];
   const Body& b = bodies[s.body];
-  update_shape_aabb(s, b, 0);
-  s.proxy = broadphase.create_proxy(
-      s.aabb, b.type == BodyType::static_body ? ProxyKind::static_body : ProxyKind::moving,
-      shape_index);
+  update_shape_aabb(s, b);
+  s.proxy = broadphase.create_proxy(s.aabb,
+                                    b.type == BodyType::static_body ? ProxyKind::static_body
+                                    : b.type == BodyType::kinematic ? ProxyKind::kinematic
+                                                                    : ProxyKind::moving,
+                                    shape_index, detail::broadphase_size(s.geometry));
 }
 
 void WorldState::destroy_proxy(Shape& s) {

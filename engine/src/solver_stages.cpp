@@ -322,7 +322,7 @@ void WorldState::solve() {
 void WorldState::finish_body(std::uint32_t solver_index) {
   write_back(solver_index);
   Body& b = bodies[solver_to_body[solver_index]];
-  for (const std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b, dt);
+  for (const std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b);
   const Real linear_tolerance = def.linear_sleep_tolerance;
   const Real angular_tolerance = def.angular_sleep_tolerance;
   if (!def.enable_sleep || !b.allow_sleep || b.type != BodyType::dynamic ||

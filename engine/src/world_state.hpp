@@ -124,7 +124,7 @@ struct WorldState {
   void compact_awake_list();
   void update_mass(detail::Body& body);
   // shape.cpp
-  void update_shape_aabb(detail::Shape& shape, const detail::Body& body, Real step);
+  void update_shape_aabb(detail::Shape& shape, const detail::Body& body);
   void create_proxy(std::uint32_t shape_index);
   void destroy_proxy(detail::Shape& shape);
   // Re-makes the shape's broadphase proxy, so every pair it is in is tested again next step

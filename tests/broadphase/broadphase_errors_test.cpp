@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -91,6 +92,45 @@ TYPED_TEST(BroadphaseErrors, SmallBoxesGetSmallMarginsAndNoReach) {
   EXPECT_TRUE(broadphase.move_proxy(small, {Vec2(1, 0), Vec2(1.3, 0.4)}));
   EXPECT_EQ(broadphase.fat_aabb(small).lower, Vec2(1 - 0.03125, -0.03125));
   EXPECT_EQ(broadphase.fat_aabb(small).upper, Vec2(1.3 + 0.03125, 0.4 + 0.03125));
+}
+
+// A size given at creation sets the margin, whatever boxes the proxy is later given (a turning
+// shape's box grows and shrinks; its size does not).
+TYPED_TEST(BroadphaseErrors, AGivenSizeSetsTheMargin) {
+  TypeParam broadphase(Fattening{0.25, 0.125, 0});
+  const auto id = broadphase.create_proxy({Vec2(0, 0), Vec2(3, 4)}, ProxyKind::moving, 0, 0.5);
+  EXPECT_EQ(broadphase.fat_aabb(id).lower, Vec2(-0.0625, -0.0625));
+  EXPECT_TRUE(broadphase.move_proxy(id, {Vec2(10, 0), Vec2(11, 1)}));
+  EXPECT_EQ(broadphase.fat_aabb(id).upper, Vec2(11.0625, 1.0625));
+  // Large: the margin's cap holds.
+  const auto big = broadphase.create_proxy({Vec2(0, 0), Vec2(1, 1)}, ProxyKind::moving, 1, 100);
+  EXPECT_EQ(broadphase.fat_aabb(big).lower, Vec2(-0.25, -0.25));
+  for (const mink::Real bad :
+       {-0.5, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    EXPECT_THROW(broadphase.create_proxy({Vec2(0, 0), Vec2(1, 1)}, ProxyKind::moving, 2, bad),
+                 mink::InvalidArgumentError)
+        << bad;
+  }
+}
+
+// Kinematic proxies pair as moving ones do, with static ones too; query_fixed finds them
+// with the static ones and leaves the moving ones out.
+TYPED_TEST(BroadphaseErrors, KinematicProxiesPairAsMovingAndAreFixedObstacles) {
+  TypeParam broadphase(0);
+  const auto ground = broadphase.create_proxy({Vec2(0, 0), Vec2(4, 1)}, ProxyKind::static_body, 0);
+  const auto mover = broadphase.create_proxy({Vec2(1, 0.5), Vec2(2, 1.5)}, ProxyKind::kinematic, 1);
+  const auto box = broadphase.create_proxy({Vec2(1.5, 1), Vec2(2.5, 2)}, ProxyKind::moving, 2);
+  mink::PairEvents events;
+  broadphase.update_pairs(events);
+  EXPECT_EQ(broadphase.pairs().size(), 3u);  // ground-mover, ground-box, mover-box
+  std::vector<mink::ProxyId> found;
+  broadphase.query_fixed({Vec2(0, 0), Vec2(4, 4)}, found);
+  std::sort(found.begin(), found.end());
+  EXPECT_EQ(found, (std::vector<mink::ProxyId>{ground, mover}));
+  found.clear();
+  broadphase.query({Vec2(0, 0), Vec2(4, 4)}, found);
+  EXPECT_EQ(found.size(), 3u);
+  (void)box;
 }
 
 TYPED_TEST(BroadphaseErrors, StaticPairsAreNeverReported) {

@@ -12,8 +12,13 @@ namespace mink {
 using ProxyId = std::uint32_t;
 inline constexpr ProxyId null_proxy = std::numeric_limits<ProxyId>::max();
 
-/// Static proxies never pair with each other.
-enum class ProxyKind : std::uint8_t { static_body, moving };
+/// Static proxies never pair with each other. Kinematic proxies pair as moving ones do; with
+/// the static ones they are the fixed obstacles query_fixed() finds.
+enum class ProxyKind : std::uint8_t { static_body, moving, kinematic };
+
+/// The size a proxy's margin follows when its creator gives none: half the diagonal of each
+/// box it is given (see Fattening).
+inline constexpr Real kSizeOfBox = -1;
 
 /// A candidate pair, always with a < b.
 struct ProxyPair {
@@ -39,8 +44,12 @@ class Broadphase {
   /// @param tight the object's exact box (stored fattened by the margin)
   /// @param kind static proxies never pair with each other
   /// @param user_data carried along for the caller (user_data())
-  /// @throws InvalidArgumentError for a box with a non-finite coordinate or lower above upper
-  virtual ProxyId create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data) = 0;
+  /// @param size the object's radius about its centre, which its margin follows (Fattening),
+  /// or kSizeOfBox
+  /// @throws InvalidArgumentError for a box with a non-finite coordinate or lower above upper,
+  /// or a size that is neither kSizeOfBox nor finite and non-negative
+  virtual ProxyId create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data,
+                               Real size = kSizeOfBox) = 0;
   /// @throws InvalidArgumentError for an id that is not a live proxy
   virtual void destroy_proxy(ProxyId id) = 0;
   /// @return true when the stored (fat) box changed.
@@ -61,9 +70,9 @@ class Broadphase {
   /// @throws InvalidArgumentError for a bad box or a non-finite point
   virtual void query(const Aabb& box, std::vector<ProxyId>& out) const = 0;
   virtual void query_point(const Vec2& point, std::vector<ProxyId>& out) const = 0;
-  /// @brief As query(), but only the proxies created as ProxyKind::static_body: what a moving
-  /// body sweeps against, without visiting its moving neighbours.
-  virtual void query_static(const Aabb& box, std::vector<ProxyId>& out) const = 0;
+  /// @brief As query(), but only the proxies created as ProxyKind::static_body or kinematic:
+  /// what a fast body sweeps against, without visiting its moving neighbours.
+  virtual void query_fixed(const Aabb& box, std::vector<ProxyId>& out) const = 0;
 };
 
 }  // namespace mink

@@ -14,7 +14,8 @@ class BruteForceBroadphase final : public Broadphase {
   explicit BruteForceBroadphase(Real margin = 0.1);
   explicit BruteForceBroadphase(const Fattening& fattening);
 
-  ProxyId create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data) override;
+  ProxyId create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data,
+                       Real size = kSizeOfBox) override;
   void destroy_proxy(ProxyId id) override;
   bool move_proxy(ProxyId id, const Aabb& tight) override;
   void update_pairs(PairEvents& events) override;
@@ -27,7 +28,7 @@ class BruteForceBroadphase final : public Broadphase {
 
   void query(const Aabb& box, std::vector<ProxyId>& out) const override;
   void query_point(const Vec2& point, std::vector<ProxyId>& out) const override;
-  void query_static(const Aabb& box, std::vector<ProxyId>& out) const override;
+  void query_fixed(const Aabb& box, std::vector<ProxyId>& out) const override;
 
  private:
   ProxyStore store_;

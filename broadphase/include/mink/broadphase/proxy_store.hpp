@@ -12,8 +12,9 @@
 namespace mink {
 
 /// How a tight box is fattened when it is stored: grown by a margin on every side, at most
-/// `margin` and at most `size_fraction` of the box's half-diagonal (so a small shape gets a
-/// small margin, and its pairs stay few), and stretched ahead along the last step's motion.
+/// `margin` and at most `size_fraction` of the object's size (so a small shape gets a small
+/// margin, and its pairs stay few), and stretched ahead along the last step's motion. The size
+/// is the one given at create_proxy, else the box's half-diagonal.
 struct Fattening {
   Real margin = 0.1;  ///< the most a box grows on each side
   Real size_fraction = std::numeric_limits<Real>::infinity();
@@ -29,7 +30,7 @@ class ProxyStore {
  public:
   explicit ProxyStore(const Fattening& fattening);
 
-  ProxyId create(const Aabb& tight, ProxyKind kind, std::uint64_t user_data);
+  ProxyId create(const Aabb& tight, ProxyKind kind, std::uint64_t user_data, Real size);
   void destroy(ProxyId id);
   /// Refattens and returns true when `tight` leaves the stored box (see Fattening).
   bool move(ProxyId id, const Aabb& tight);
@@ -45,6 +46,8 @@ class ProxyStore {
   bool alive(ProxyId id) const { return id < alive_.size() && alive_[id] != 0; }
   const Aabb& fat(ProxyId id) const { return fat_[id]; }
   bool is_static(ProxyId id) const { return kind_[id] == ProxyKind::static_body; }
+  /// Static or kinematic: an obstacle that query_fixed() finds.
+  bool is_fixed(ProxyId id) const { return kind_[id] != ProxyKind::moving; }
   std::uint64_t user_data(ProxyId id) const { return user_data_[id]; }
   std::size_t count() const { return count_; }
   /// One past the largest id ever handed out.
@@ -60,12 +63,13 @@ class ProxyStore {
   void fields(Archive& archive);
 
   /// `tight` grown by its margin and stretched along `step`, the motion since the last move.
-  Aabb fattened(const Aabb& tight, const Vec2& step, std::string_view operation) const;
+  Aabb fattened(const Aabb& tight, const Vec2& step, Real size, std::string_view operation) const;
 
   Fattening fattening_;
   std::vector<Aabb> fat_;
   std::vector<Vec2> last_lower_;  ///< lower corner of the last tight box, for the step
   std::vector<ProxyKind> kind_;
+  std::vector<Real> size_;  ///< per id: the size given at creation, or kSizeOfBox
   std::vector<std::uint64_t> user_data_;
   std::vector<std::uint8_t> alive_;
   std::vector<ProxyId> free_ids_;

@@ -29,7 +29,8 @@ class SweepAndPrune final : public Broadphase {
   explicit SweepAndPrune(Real margin = 0.1);
   explicit SweepAndPrune(const Fattening& fattening);
 
-  ProxyId create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data) override;
+  ProxyId create_proxy(const Aabb& tight, ProxyKind kind, std::uint64_t user_data,
+                       Real size = kSizeOfBox) override;
   void destroy_proxy(ProxyId id) override;
   bool move_proxy(ProxyId id, const Aabb& tight) override;
   void update_pairs(PairEvents& events) override;
@@ -43,7 +44,7 @@ class SweepAndPrune final : public Broadphase {
 
   void query(const Aabb& box, std::vector<ProxyId>& out) const override;
   void query_point(const Vec2& point, std::vector<ProxyId>& out) const override;
-  void query_static(const Aabb& box, std::vector<ProxyId>& out) const override;
+  void query_fixed(const Aabb& box, std::vector<ProxyId>& out) const override;
 
   // Statistics, for tests and tuning.
   int sweep_axis() const { return sweep_axis_; }
@@ -65,7 +66,8 @@ class SweepAndPrune final : public Broadphase {
     std::uint64_t key;
     Real lo0, hi0, lo1, hi1;
     ProxyId id;
-    std::uint32_t is_static;
+    std::uint16_t is_static;  ///< static: never pairs with another static entry
+    std::uint16_t is_fixed;   ///< static or kinematic: query_fixed() finds it
   };
   /// What happened to a proxy since the last update_pairs.
   enum Touch : std::uint8_t { kMoved = 1, kCreated = 2, kDestroyed = 4 };
