@@ -8,7 +8,7 @@ CTEST_FLAGS ?= --output-on-failure
 PYTHON ?= $(shell test -x /usr/bin/python3 && echo /usr/bin/python3 || command -v python3)
 CONFIGURE = cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DPython3_EXECUTABLE=$(PYTHON)
 
-.PHONY: all deps build python demo test bench docs format clean sanitize-test tsan-test soak fuzz
+.PHONY: all deps build python demo test bench docs format clean sanitize-test tsan-test soak lockstep fuzz
 
 all: build
 
@@ -85,6 +85,15 @@ soak: deps-test
 	$(CONFIGURE) -DMINK_BUILD_TESTS=ON $(CMAKE_FLAGS)
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target mink_soak
 	$(BUILD_DIR)/bin/mink_soak 10 10000
+
+# Snapshot, restore and step in lockstep for 1000 steps on every built-in scene, the big ones
+# included (the tests run those for 150), a snapshot of a run at one worker restored into a run
+# at two.
+lockstep: deps-test
+	$(CONFIGURE) -DMINK_BUILD_TESTS=ON $(CMAKE_FLAGS)
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target mink_engine_tests
+	MINK_LOCKSTEP_FULL=1 $(BUILD_DIR)/bin/mink_engine_tests \
+	  --gtest_filter='Builtins/SnapshotScenes.RestoredRunsContinueInLockstep/*'
 
 # The libFuzzer harnesses of fuzz/ (clang 14, ASan + UBSan), in their own build dir, JOBS at a
 # time, each for FUZZ_SECONDS on its seed corpus fuzz/corpus/NAME/; what they learn collects in

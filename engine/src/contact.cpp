@@ -4,6 +4,7 @@
 #include "contact.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <functional>
@@ -349,7 +350,22 @@ void WorldState::collide() {
   // The contacts of moving bodies, in contact order (the order events and the solver use).
   compact_awake_list();
   step_contact_marks.assign((contacts.size() + 63) / 64, 0);
-  for (const std::uint32_t i : awake_list) mark_step_contacts(bodies[i]);
+  if (tasks.workers() == 1) {
+    for (const std::uint32_t i : awake_list) mark_step_contacts(bodies[i]);
+  } else {
+    // Bodies in parallel, each setting its contacts' bits; a bit set twice is set all the
+    // same, so the marks are as the serial loop leaves them.
+    tasks.parallel_for(static_cast<std::uint32_t>(awake_list.size()), 256,
+                       [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                         for (std::uint32_t k = begin; k < end; ++k) {
+                           for (const std::uint32_t ci : bodies[awake_list[k]].contacts) {
+                             std::atomic_ref<std::uint64_t>(step_contact_marks[ci >> 6])
+                                 .fetch_or(std::uint64_t{1} << (ci & 63),
+                                           std::memory_order_relaxed);
+                           }
+                         }
+                       });
+  }
   collect_step_contacts();
   counters.collided_contacts = step_contacts.size();
   // Manifolds in parallel (each writes only its own contact), then what is shared (colours,

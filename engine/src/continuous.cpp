@@ -380,6 +380,7 @@ void WorldState::solve_continuous() {
     b.rotation = pose.rotation;
     b.center = b.origin + b.rotation.apply(b.local_center);
     for (const std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b);
+    boxes_left[fast.solver_index] = 1;
   }
   counters.continuous_hits = continuous.hits;
 }

@@ -121,8 +121,8 @@ void prepare(GearJoint& joint, JointFrame& frame) {
   for (std::size_t g = 0; g < 2; ++g) {
     GearedJoint& geared = joint.joints[g];
     if (!geared.prismatic) continue;
-    const JointBody& b = frame.bodies[g];
-    const JointBody& a = frame.bodies[g + 2];
+    const JointBodyStart& b = frame.starts[g];
+    const JointBodyStart& a = frame.starts[g + 2];
     geared.anchor_a = a.rotation.apply(geared.local_anchor_a - a.local_center);
     geared.anchor_b = b.rotation.apply(geared.local_anchor_b - b.local_center);
     geared.axis = a.rotation.apply(geared.local_axis_a);

@@ -17,14 +17,18 @@
 
 namespace mink::detail {
 
-// One body of a joint at the start of the step.
+// One body of a joint as the rows read it every substep.
 struct JointBody {
   std::int32_t solver = 0;  // index into the solver body array (the still body when not moving)
-  Vec2 center{0, 0};        // centre of mass, world
+  Real inv_mass = 0, inv_inertia = 0;
+};
+
+// Where one body of a joint was at the start of the step, which only preparing reads (kept
+// apart from JointBody so the rows' reads of a large net stay on few cache lines).
+struct JointBodyStart {
+  Vec2 center{0, 0};  // centre of mass, world
   Rotation rotation{};
   Vec2 local_center{0, 0};  // centre of mass in the body frame
-  Real inv_mass = 0, inv_inertia = 0;
-  Pose pose() const { return {center - rotation.apply(local_center), rotation}; }
 };
 
 // A joint's bodies and the anchors, fixed for the step by prepare (Box2D v3's joint frames):
@@ -40,6 +44,7 @@ struct JointFrame {
   // Step start value of the joint's coordinate, for kinds whose position error needs more than
   // the anchors (a revolute's unwrapped angle, a gear's two joint coordinates).
   Real coordinate_a = 0, coordinate_b = 0;
+  std::array<JointBodyStart, 4> starts{};  // the bodies' poses at step start, as `bodies`
 };
 
 // The joint's state at the end of a step: bodies as they are now (poses and velocities), for

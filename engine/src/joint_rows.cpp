@@ -35,8 +35,8 @@ void apply_angular(SolverBody& a, SolverBody& b, const JointFrame& frame, Real i
 }  // namespace
 
 void set_anchors(JointFrame& frame, const Vec2& local_anchor_a, const Vec2& local_anchor_b) {
-  const JointBody& a = frame.bodies[0];
-  const JointBody& b = frame.bodies[1];
+  const JointBodyStart& a = frame.starts[0];
+  const JointBodyStart& b = frame.starts[1];
   frame.anchor_a = a.rotation.apply(local_anchor_a - a.local_center);
   frame.anchor_b = b.rotation.apply(local_anchor_b - b.local_center);
   frame.delta_center = b.center - a.center;

@@ -122,10 +122,11 @@ void WorldState::prepare_joint(std::uint32_t j, std::uint32_t own_slot, Real h,
       const std::uint32_t bi = joint.body[k];
       const Body& b = bodies[bi];
       detail::JointBody& jb = frame.bodies[static_cast<std::size_t>(k)];
+      detail::JointBodyStart& start = frame.starts[static_cast<std::size_t>(k)];
       const std::int32_t s = body_solver_index[bi];
-      jb.center = b.center;
-      jb.rotation = b.rotation;
-      jb.local_center = b.local_center;
+      start.center = b.center;
+      start.rotation = b.rotation;
+      start.local_center = b.local_center;
       if (s >= 0) {
         jb.inv_mass = solver_info[static_cast<std::size_t>(s)].inv_mass;
         jb.inv_inertia = solver_info[static_cast<std::size_t>(s)].inv_inertia;

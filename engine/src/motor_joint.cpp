@@ -31,11 +31,10 @@ void prepare(MotorJoint& joint, JointFrame& frame) {
   const MotorJointDef& def = joint.def;
   // A's anchor is the target point; B's is its origin.
   set_anchors(frame, def.linear_offset, Vec2(0, 0));
-  const JointBody& a = frame.bodies[0];
-  const JointBody& b = frame.bodies[1];
-  const Real k = a.inv_inertia + b.inv_inertia;
+  const Real k = frame.bodies[0].inv_inertia + frame.bodies[1].inv_inertia;
   joint.axial_mass = k > 0 ? 1 / k : 0;
-  joint.angle_error = wrap_angle(relative_angle(a.rotation, b.rotation) - def.angular_offset);
+  joint.angle_error = wrap_angle(
+      relative_angle(frame.starts[0].rotation, frame.starts[1].rotation) - def.angular_offset);
 }
 
 void warm_start(const MotorJoint& joint, const JointFrame& frame, SolverBody* bodies) {

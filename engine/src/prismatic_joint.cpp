@@ -48,8 +48,8 @@ Real axial_impulse(const PrismaticJoint& joint) {
 void prepare(PrismaticJoint& joint, JointFrame& frame) {
   const PrismaticJointDef& def = joint.def;
   set_anchors(frame, def.local_anchor_a, def.local_anchor_b);
-  const JointBody& a = frame.bodies[0];
-  const JointBody& b = frame.bodies[1];
+  const JointBodyStart& a = frame.starts[0];
+  const JointBodyStart& b = frame.starts[1];
   joint.axis = a.rotation.apply(def.local_axis_a);
   joint.angle_error = wrap_angle(relative_angle(a.rotation, b.rotation) - def.reference_angle);
   joint.spring_soft = make_softness(def.spring.hertz, def.spring.damping_ratio, frame.h);

@@ -42,8 +42,8 @@ PulleyRow pulley_row(const PulleyJoint& joint, const JointFrame& frame, const So
   PulleyRow row;
   row.ra = delta_rotation(a).apply(frame.anchor_a);
   row.rb = delta_rotation(b).apply(frame.anchor_b);
-  row.a = rope(joint.def.ground_anchor_a, frame.bodies[0].center + delta_position(a) + row.ra);
-  row.b = rope(joint.def.ground_anchor_b, frame.bodies[1].center + delta_position(b) + row.rb);
+  row.a = rope(joint.def.ground_anchor_a, frame.starts[0].center + delta_position(a) + row.ra);
+  row.b = rope(joint.def.ground_anchor_b, frame.starts[1].center + delta_position(b) + row.rb);
   row.ca = cross(row.ra, row.a.axis);
   row.cb = cross(row.rb, row.b.axis);
   const JointBody& ja = frame.bodies[0];

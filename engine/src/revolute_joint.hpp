@@ -7,7 +7,8 @@ namespace mink::detail {
 // A revolute joint: a point constraint, plus on the relative angle a spring, a motor and
 // limits, each its own row solved in that order (the point last, as it matters most).
 struct RevoluteJoint {
-  RevoluteJointDef def;
+  // The solver's state first and the definition after it: a plain pin's solve then reads the
+  // record's first line only.
   // Accumulated impulses, kept between steps for warm starting.
   Vec2 linear_impulse{0, 0};
   Real spring_impulse = 0, motor_impulse = 0, lower_impulse = 0, upper_impulse = 0;
@@ -19,6 +20,7 @@ struct RevoluteJoint {
   bool angle_rows = false;
   Real axial_mass = 0;
   Softness spring_soft;
+  RevoluteJointDef def;
 };
 
 // The functions every joint kind implements (see joint_solver.cpp for when each runs);

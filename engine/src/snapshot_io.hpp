@@ -311,17 +311,15 @@ void io(Archive& a, Softness& s) {
   a(s.impulse_scale);
 }
 template <typename Archive>
-void io(Archive& a, JointBody& b) {
-  a(b.solver);
-  a(b.center);
-  a(b.rotation);
-  a(b.local_center);
-  a(b.inv_mass);
-  a(b.inv_inertia);
-}
-template <typename Archive>
 void io(Archive& a, JointFrame& f) {
-  a(f.bodies);
+  for (std::size_t k = 0; k < f.bodies.size(); ++k) {
+    a(f.bodies[k].solver);
+    a(f.starts[k].center);
+    a(f.starts[k].rotation);
+    a(f.starts[k].local_center);
+    a(f.bodies[k].inv_mass);
+    a(f.bodies[k].inv_inertia);
+  }
   a(f.anchor_a);
   a(f.anchor_b);
   a(f.delta_center);

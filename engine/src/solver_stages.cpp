@@ -29,6 +29,7 @@ Vec2 clamp_length(Vec2 v, Real limit) {
 
 using detail::Body;
 using detail::Contact;
+using detail::Shape;
 
 namespace {
 
@@ -52,51 +53,55 @@ void WorldState::prepare_contacts() {
 
   // Solver bodies: every awake body that moves, then one still body standing in for static
   // and sleeping ones.
-  solver_bodies.clear();
-  solver_params.clear();
-  solver_to_body.clear();
-  solver_info.clear();
   // Entries stay -1 between steps: only this step's solver bodies are set, and reset in
   // finish_step, so sleeping bodies are never touched.
   body_solver_index.resize(bodies.size(), -1);
   compact_awake_list();
-  for (const std::uint32_t i : awake_list) {
-    Body& b = bodies[i];
-    body_solver_index[i] = static_cast<std::int32_t>(solver_bodies.size());
-    solver_info.push_back({b.center.x(), b.center.y(), b.inv_mass, b.inv_inertia});
-    // The solver is single precision and squares speeds: a velocity set beyond the speed
-    // limits, or a push of a huge force, is scaled down here in double precision (1e300 m/s
-    // became infinite there and the body NaN). Velocities go to the limits, where the solver
-    // clamps them anyway; a kinematic body, which moves by its own velocity in double
-    // precision, keeps the clamped one, as its contacts see; the push keeps its direction to
-    // a millionth.
-    const Vec2 velocity = clamp_length(b.velocity, def.max_linear_speed);
-    const Real angular_velocity =
-        std::clamp(b.angular_velocity, -max_angular_speed, max_angular_speed);
-    if (b.type == BodyType::kinematic) {
-      b.velocity = velocity;
-      b.angular_velocity = angular_velocity;
+  const auto awake = static_cast<std::uint32_t>(awake_list.size());
+  solver_bodies.resize(awake);
+  solver_params.resize(awake);
+  solver_to_body.assign(awake_list.begin(), awake_list.end());
+  solver_info.resize(awake);
+  // Each body's records are its own, so bodies are loaded in parallel.
+  tasks.parallel_for(awake, 256, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const std::uint32_t i = awake_list[k];
+      Body& b = bodies[i];
+      body_solver_index[i] = static_cast<std::int32_t>(k);
+      solver_info[k] = {b.center.x(), b.center.y(), b.inv_mass, b.inv_inertia};
+      // The solver is single precision and squares speeds: a velocity set beyond the speed
+      // limits, or a push of a huge force, is scaled down here in double precision (1e300 m/s
+      // became infinite there and the body NaN). Velocities go to the limits, where the solver
+      // clamps them anyway; a kinematic body, which moves by its own velocity in double
+      // precision, keeps the clamped one, as its contacts see; the push keeps its direction to
+      // a millionth.
+      const Vec2 velocity = clamp_length(b.velocity, def.max_linear_speed);
+      const Real angular_velocity =
+          std::clamp(b.angular_velocity, -max_angular_speed, max_angular_speed);
+      if (b.type == BodyType::kinematic) {
+        b.velocity = velocity;
+        b.angular_velocity = angular_velocity;
+      }
+      detail::SolverBody sb;
+      sb.vx = velocity.x();
+      sb.vy = velocity.y();
+      sb.w = angular_velocity;
+      solver_bodies[k] = sb;
+      detail::SolverBodyParams p;
+      if (b.type == BodyType::dynamic) {
+        const Vec2 dv = clamp_length(h * (b.inv_mass * b.force + b.gravity_scale * def.gravity),
+                                     1e6 * def.max_linear_speed);
+        p.dvx = dv.x();
+        p.dvy = dv.y();
+        // Beyond twice the limit, the solver ends at the limit whatever the body turned at.
+        p.dw =
+            std::clamp(h * b.inv_inertia * b.torque, -2 * max_angular_speed, 2 * max_angular_speed);
+        p.linear_damping = 1 / (1 + h * b.linear_damping);
+        p.angular_damping = 1 / (1 + h * b.angular_damping);
+      }
+      solver_params[k] = p;
     }
-    detail::SolverBody sb;
-    sb.vx = velocity.x();
-    sb.vy = velocity.y();
-    sb.w = angular_velocity;
-    solver_bodies.push_back(sb);
-    detail::SolverBodyParams p;
-    if (b.type == BodyType::dynamic) {
-      const Vec2 dv = clamp_length(h * (b.inv_mass * b.force + b.gravity_scale * def.gravity),
-                                   1e6 * def.max_linear_speed);
-      p.dvx = dv.x();
-      p.dvy = dv.y();
-      // Beyond twice the limit, the solver ends at the limit whatever the body turned at.
-      p.dw =
-          std::clamp(h * b.inv_inertia * b.torque, -2 * max_angular_speed, 2 * max_angular_speed);
-      p.linear_damping = 1 / (1 + h * b.linear_damping);
-      p.angular_damping = 1 / (1 + h * b.angular_damping);
-    }
-    solver_params.push_back(p);
-    solver_to_body.push_back(i);
-  }
+  });
   const auto still = static_cast<std::int32_t>(solver_bodies.size());
   still_body = still;
   solver_bodies.emplace_back();
@@ -310,6 +315,7 @@ void WorldState::solve() {
 
   // Each body's step finished in one visit while its records are at hand, bodies in parallel.
   if (def.enable_continuous) continuous.prepare_marks(solver_to_body.size());
+  boxes_left.assign(solver_to_body.size(), 0);
   tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 128,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
                        for (std::uint32_t si = begin; si < end; ++si) finish_body(si);
@@ -322,7 +328,13 @@ void WorldState::solve() {
 void WorldState::finish_body(std::uint32_t solver_index) {
   write_back(solver_index);
   Body& b = bodies[solver_to_body[solver_index]];
-  for (const std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b);
+  for (const std::uint32_t s : b.shapes) {
+    Shape& shape = shapes[s];
+    update_shape_aabb(shape, b);
+    if (shape.proxy != null_proxy && !broadphase.fat_aabb(shape.proxy).contains(shape.aabb)) {
+      boxes_left[solver_index] = 1;
+    }
+  }
   const Real linear_tolerance = def.linear_sleep_tolerance;
   const Real angular_tolerance = def.angular_sleep_tolerance;
   if (!def.enable_sleep || !b.allow_sleep || b.type != BodyType::dynamic ||
@@ -336,18 +348,27 @@ void WorldState::finish_body(std::uint32_t solver_index) {
 }
 
 void WorldState::finish_step() {
-  // The boxes finish_body left (and continuous collision redid for bodies it stopped short),
-  // to the broadphase in order.
-  for (const std::uint32_t i : solver_to_body) {
-    for (std::uint32_t s : bodies[i].shapes) {
+  // The boxes that left their broadphase boxes in finish_body (or as continuous collision
+  // stopped their body short), to the broadphase in order; the others it would keep.
+  for (std::size_t k = 0; k < solver_to_body.size(); ++k) {
+    if (boxes_left[k] == 0) continue;
+    for (std::uint32_t s : bodies[solver_to_body[k]].shapes) {
       if (shapes[s].proxy != null_proxy) broadphase.move_proxy(shapes[s].proxy, shapes[s].aabb);
     }
   }
-  // Move events in body slot order: the simulated bodies, and those that fell asleep.
-  for (const std::uint32_t i : solver_to_body) {
-    const Body& b = bodies[i];
-    move_events.push_back({body_id(i), b.pose(), false, b.user_data});
-  }
+  // Move events in body slot order: the simulated bodies (in parallel, each to its own
+  // place), and those that fell asleep.
+  const std::size_t first_event = move_events.size();
+  move_events.resize(first_event + solver_to_body.size());
+  tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 256,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       for (std::uint32_t k = begin; k < end; ++k) {
+                         const std::uint32_t i = solver_to_body[k];
+                         const Body& b = bodies[i];
+                         move_events[first_event + k] = {body_id(i), b.pose(), false, b.user_data};
+                         body_solver_index[i] = -1;
+                       }
+                     });
   for (const std::uint32_t i : fell_asleep) {
     const Body& b = bodies[i];
     move_events.push_back({body_id(i), b.pose(), true, b.user_data});
@@ -357,7 +378,6 @@ void WorldState::finish_step() {
         move_events.begin(), move_events.end(),
         [](const BodyMoveEvent& x, const BodyMoveEvent& y) { return x.body.index < y.body.index; });
   }
-  for (const std::uint32_t i : solver_to_body) body_solver_index[i] = -1;
   counters.broadphase_pairs = broadphase.pairs().size();
   counters.contacts = contacts.size();
   counters.touching_contacts = touching_count;

@@ -12,11 +12,10 @@ namespace mink::detail {
 void prepare(WeldJoint& joint, JointFrame& frame) {
   const WeldJointDef& def = joint.def;
   set_anchors(frame, def.local_anchor_a, def.local_anchor_b);
-  const JointBody& a = frame.bodies[0];
-  const JointBody& b = frame.bodies[1];
-  const Real k = a.inv_inertia + b.inv_inertia;
+  const Real k = frame.bodies[0].inv_inertia + frame.bodies[1].inv_inertia;
   joint.axial_mass = k > 0 ? 1 / k : 0;
-  joint.angle_error = wrap_angle(relative_angle(a.rotation, b.rotation) - def.reference_angle);
+  joint.angle_error = wrap_angle(
+      relative_angle(frame.starts[0].rotation, frame.starts[1].rotation) - def.reference_angle);
   joint.linear_soft = make_softness(def.linear_hertz, def.linear_damping_ratio, frame.h);
   joint.angular_soft = make_softness(def.angular_hertz, def.angular_damping_ratio, frame.h);
 }

@@ -20,7 +20,7 @@ Real axial_impulse(const WheelJoint& joint) {
 void prepare(WheelJoint& joint, JointFrame& frame) {
   const WheelJointDef& def = joint.def;
   set_anchors(frame, def.local_anchor_a, def.local_anchor_b);
-  joint.axis = frame.bodies[0].rotation.apply(def.local_axis_a);
+  joint.axis = frame.starts[0].rotation.apply(def.local_axis_a);
   const Real k = frame.bodies[0].inv_inertia + frame.bodies[1].inv_inertia;
   joint.motor_mass = k > 0 ? 1 / k : 0;
   joint.spring_soft = make_softness(def.spring.hertz, def.spring.damping_ratio, frame.h);

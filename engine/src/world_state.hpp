@@ -90,6 +90,9 @@ struct WorldState {
   std::vector<detail::SolverBodyParams> solver_params;
   std::vector<std::uint32_t> solver_to_body;
   std::vector<std::int32_t> body_solver_index;
+  // Per solver body, this step: whether a shape's box left its broadphase box (found while the
+  // body's records are at hand, so the broadphase's serial update visits only those).
+  std::vector<std::uint8_t> boxes_left;
   std::vector<detail::SolverBodyInfo> solver_info;
   std::vector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
   std::vector<detail::ConstraintBodies> constraint_bodies, sorted_bodies;

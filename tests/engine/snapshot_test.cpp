@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <random>
@@ -79,15 +80,19 @@ class SnapshotScenes : public testing::TestWithParam<std::string_view> {};
 // of the same scene built apart at two workers (so its pool, world number and ids differ)
 // restores the snapshot in place and must give the same hash at every checkpoint, the
 // schedule resuming with it. A thousand steps where a step is cheap; the big scenes (joint
-// grids, drums, the suite's thousands of bodies) a few hundred, which CI can afford.
+// grids, drums, the suite's thousands of bodies) a few hundred, which CI can afford, or a
+// thousand with MINK_LOCKSTEP_FULL=1 (make lockstep).
 TEST_P(SnapshotScenes, RestoredRunsContinueInLockstep) {
   const std::string_view name = GetParam();
   SceneDef scene = builtin_scene(name);
   scene.world.worker_count = 1;
   SceneRun a(scene);
   for (int i = 0; i < test::long_run(37, 3); ++i) a.step();
+  const char* full = std::getenv("MINK_LOCKSTEP_FULL");
   const bool big = a.world().body_count() > 400 || a.world().joint_count() > 100;
-  const int steps = big ? test::long_run(150, 5) : test::long_run(1000, 10);
+  const int steps = big && (full == nullptr || std::string_view(full) != "1")
+                        ? test::long_run(150, 5)
+                        : test::long_run(1000, 10);
   const std::vector<std::uint8_t> snapshot = a.snapshot();
   // A hash costs a snapshot: every 25th step (a difference persists to the end anyway).
   const int stride = 25;
