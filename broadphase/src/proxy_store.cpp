@@ -18,6 +18,15 @@ std::string describe(const Aabb& box) {
          std::to_string(box.upper.x()) + ", " + std::to_string(box.upper.y()) + ")]";
 }
 
+// What create_proxy accepts, and so what a loaded store may hold.
+bool known_kind(ProxyKind kind) {
+  return kind == ProxyKind::static_body || kind == ProxyKind::moving ||
+         kind == ProxyKind::kinematic;
+}
+bool valid_size(Real size) {
+  return size == kSizeOfBox || (std::isfinite(size) && size >= 0);
+}
+
 }  // namespace
 
 void ProxyStore::check_box(const Aabb& box, std::string_view operation) {
@@ -56,11 +65,11 @@ ProxyStore::ProxyStore(const Fattening& fattening) : fattening_(fattening) {
 
 ProxyId ProxyStore::create(const Aabb& tight, ProxyKind kind, std::uint64_t user_data, Real size) {
   check_box(tight, "create_proxy");
-  if (size != kSizeOfBox && !(std::isfinite(size) && size >= 0)) {
+  if (!valid_size(size)) {
     throw InvalidArgumentError("create_proxy: size " + std::to_string(size) +
                                " is neither finite and non-negative nor kSizeOfBox");
   }
-  if (kind != ProxyKind::static_body && kind != ProxyKind::moving && kind != ProxyKind::kinematic) {
+  if (!known_kind(kind)) {
     throw InvalidArgumentError("create_proxy: unknown proxy kind " +
                                std::to_string(static_cast<int>(kind)));
   }
@@ -172,16 +181,13 @@ void ProxyStore::fields(Archive& archive) {
       archive.in.fail("broadphase proxy arrays of different lengths");
     }
     for (const ProxyKind kind : kind_) {
-      if (kind != ProxyKind::static_body && kind != ProxyKind::moving &&
-          kind != ProxyKind::kinematic) {
+      if (!known_kind(kind)) {
         archive.in.fail("a broadphase proxy of unknown kind " +
                         std::to_string(static_cast<int>(kind)));
       }
     }
     for (const Real size : size_) {
-      if (size != kSizeOfBox && !(std::isfinite(size) && size >= 0)) {
-        archive.in.fail("a broadphase proxy of size " + std::to_string(size));
-      }
+      if (!valid_size(size)) archive.in.fail("a broadphase proxy of size " + std::to_string(size));
     }
     for (const ProxyId id : free_ids_) {
       if (id >= n) archive.in.fail("a free proxy id beyond the proxies");

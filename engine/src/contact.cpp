@@ -327,13 +327,17 @@ bool WorldState::update_manifold(Contact& c) const {
   return touching;
 }
 
-// Narrowphase for every contact with a moving body. A pair whose relative pose has moved
-// less than a tenth of the linear slop since its manifold was computed keeps the manifold's
-// features and only has its separations measured again (as persistent-manifold engines do):
-// resting stacks then cost a few multiplies per point instead of a collision.
-void WorldState::mark_step_contacts(const Body& body) {
+// Marks the body's contacts as the step's. `concurrent`: other threads mark other bodies at
+// the same time, so each word is set with an atomic or (a bit set twice is set all the same).
+void WorldState::mark_step_contacts(const Body& body, bool concurrent) {
   for (const std::uint32_t ci : body.contacts) {
-    step_contact_marks[ci >> 6] |= std::uint64_t{1} << (ci & 63);
+    const std::uint64_t bit = std::uint64_t{1} << (ci & 63);
+    if (concurrent) {
+      std::atomic_ref<std::uint64_t>(step_contact_marks[ci >> 6])
+          .fetch_or(bit, std::memory_order_relaxed);
+    } else {
+      step_contact_marks[ci >> 6] |= bit;
+    }
   }
 }
 
@@ -346,26 +350,22 @@ void WorldState::collect_step_contacts() {
   }
 }
 
+// Narrowphase for every contact with a moving body. A pair whose relative pose has moved
+// less than a tenth of the linear slop since its manifold was computed keeps the manifold's
+// features and only has its separations measured again (as persistent-manifold engines do):
+// resting stacks then cost a few multiplies per point instead of a collision.
 void WorldState::collide() {
-  // The contacts of moving bodies, in contact order (the order events and the solver use).
+  // The contacts of moving bodies, in contact order (the order events and the solver use),
+  // marked from the bodies in parallel.
   compact_awake_list();
   step_contact_marks.assign((contacts.size() + 63) / 64, 0);
-  if (tasks.workers() == 1) {
-    for (const std::uint32_t i : awake_list) mark_step_contacts(bodies[i]);
-  } else {
-    // Bodies in parallel, each setting its contacts' bits; a bit set twice is set all the
-    // same, so the marks are as the serial loop leaves them.
-    tasks.parallel_for(static_cast<std::uint32_t>(awake_list.size()), 256,
-                       [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-                         for (std::uint32_t k = begin; k < end; ++k) {
-                           for (const std::uint32_t ci : bodies[awake_list[k]].contacts) {
-                             std::atomic_ref<std::uint64_t>(step_contact_marks[ci >> 6])
-                                 .fetch_or(std::uint64_t{1} << (ci & 63),
-                                           std::memory_order_relaxed);
-                           }
-                         }
-                       });
-  }
+  const bool concurrent = tasks.workers() > 1;
+  tasks.parallel_for(static_cast<std::uint32_t>(awake_list.size()), 256,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       for (std::uint32_t k = begin; k < end; ++k) {
+                         mark_step_contacts(bodies[awake_list[k]], concurrent);
+                       }
+                     });
   collect_step_contacts();
   counters.collided_contacts = step_contacts.size();
   // Manifolds in parallel (each writes only its own contact), then what is shared (colours,

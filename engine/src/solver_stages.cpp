@@ -357,7 +357,7 @@ void WorldState::finish_step() {
     }
   }
   // Move events in body slot order: the simulated bodies (in parallel, each to its own
-  // place), and those that fell asleep.
+  // place, which also ends the step's solver index of each), and those that fell asleep.
   const std::size_t first_event = move_events.size();
   move_events.resize(first_event + solver_to_body.size());
   tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 256,

@@ -148,7 +148,7 @@ struct WorldState {
   bool should_make_contact(std::uint32_t shape_a, std::uint32_t shape_b) const;
   void update_pairs();
   // Marks the body's contacts for this step; collect_step_contacts lists the marked ones.
-  void mark_step_contacts(const detail::Body& body);
+  void mark_step_contacts(const detail::Body& body, bool concurrent = false);
   void collect_step_contacts();
   bool update_manifold(detail::Contact& contact) const;
   void collide();

@@ -89,10 +89,9 @@ TEST_P(SnapshotScenes, RestoredRunsContinueInLockstep) {
   SceneRun a(scene);
   for (int i = 0; i < test::long_run(37, 3); ++i) a.step();
   const char* full = std::getenv("MINK_LOCKSTEP_FULL");
+  const bool cut = full == nullptr || std::string_view(full) != "1";
   const bool big = a.world().body_count() > 400 || a.world().joint_count() > 100;
-  const int steps = big && (full == nullptr || std::string_view(full) != "1")
-                        ? test::long_run(150, 5)
-                        : test::long_run(1000, 10);
+  const int steps = big && cut ? test::long_run(150, 5) : test::long_run(1000, 10);
   const std::vector<std::uint8_t> snapshot = a.snapshot();
   // A hash costs a snapshot: every 25th step (a difference persists to the end anyway).
   const int stride = 25;
