@@ -328,17 +328,9 @@ bool WorldState::update_manifold(Contact& c) const {
 }
 
 // Marks the body's contacts as the step's. `concurrent`: other threads mark other bodies at
-// the same time, so each word is set with an atomic or (a bit set twice is set all the same).
+// the same time.
 void WorldState::mark_step_contacts(const Body& body, bool concurrent) {
-  for (const std::uint32_t ci : body.contacts) {
-    const std::uint64_t bit = std::uint64_t{1} << (ci & 63);
-    if (concurrent) {
-      std::atomic_ref<std::uint64_t>(step_contact_marks[ci >> 6])
-          .fetch_or(bit, std::memory_order_relaxed);
-    } else {
-      step_contact_marks[ci >> 6] |= bit;
-    }
-  }
+  for (const std::uint32_t ci : body.contacts) detail::set_mark(step_contact_marks, ci, concurrent);
 }
 
 void WorldState::collect_step_contacts() {

@@ -32,43 +32,46 @@ Mat2 coupling(const JointBody& b, const Vec2& r1, const Vec2& r2) {
 }  // namespace
 
 void JointChainSolver::build(IdPool<Joint>& joints, const std::vector<std::uint32_t>& order,
-                             bool enabled) {
+                             std::span<const JointEnds> ends, bool enabled) {
   path_begin_.clear();
   chain_joints_.clear();
+  chain_positions_.clear();
   next_side_.clear();
   next_other_side_.clear();
-  // Candidates: revolute joints with a moving body; each moving body's candidate count.
-  std::vector<std::uint32_t> candidates;
+  if (!enabled) return;
+  // Candidates: revolute joints with a moving body; each moving body's candidate count. Read
+  // from `ends`, in order, rather than from the joints' records, which a large net scatters.
+  std::vector<std::uint32_t> candidates, candidate_positions;
   std::vector<std::uint32_t> degree;
   const auto key = [](const JointBody& b) { return static_cast<std::size_t>(b.solver); };
-  for (const std::uint32_t j : order) {
-    Joint& joint = joints[j];
-    auto* revolute = std::get_if<RevoluteJoint>(&joint.kind);
-    if (revolute == nullptr) continue;
-    revolute->direct = false;
-    if (!enabled) continue;
-    const JointFrame& f = joint.frame;
-    if (!movable(f.bodies[0]) && !movable(f.bodies[1])) continue;
-    candidates.push_back(j);
+  for (std::uint32_t position = 0; position < order.size(); ++position) {
+    const JointEnds& e = ends[position];
+    if (!e.revolute) continue;
+    if (!movable(e.bodies[0]) && !movable(e.bodies[1])) continue;
+    candidates.push_back(order[position]);
+    candidate_positions.push_back(position);
     for (int s = 0; s < 2; ++s) {
-      if (!movable(f.bodies[s])) continue;
-      if (degree.size() <= key(f.bodies[s])) degree.resize(key(f.bodies[s]) + 1, 0);
-      ++degree[key(f.bodies[s])];
+      if (!movable(e.bodies[s])) continue;
+      if (degree.size() <= key(e.bodies[s])) degree.resize(key(e.bodies[s]) + 1, 0);
+      ++degree[key(e.bodies[s])];
     }
   }
   // Bodies in more than two candidates make the rows' graph branch: those joints stay out.
-  std::vector<std::uint32_t> kept;
-  for (const std::uint32_t j : candidates) {
-    const JointFrame& f = joints[j].frame;
+  std::vector<std::uint32_t> kept, kept_positions;
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    const JointEnds& f = ends[candidate_positions[c]];
     bool ok = true;
     for (int s = 0; s < 2; ++s) ok = ok && (!movable(f.bodies[s]) || degree[key(f.bodies[s])] <= 2);
-    if (ok) kept.push_back(j);
+    if (ok) {
+      kept.push_back(candidates[c]);
+      kept_positions.push_back(candidate_positions[c]);
+    }
   }
   // Neighbours through each side's body.
   std::vector<std::uint32_t> first_at(degree.size(), kNone);
   std::vector<std::array<std::uint32_t, 2>> neighbour(kept.size(), {kNone, kNone});
   for (std::uint32_t k = 0; k < kept.size(); ++k) {
-    const JointFrame& f = joints[kept[k]].frame;
+    const JointEnds& f = ends[kept_positions[k]];
     for (int s = 0; s < 2; ++s) {
       if (!movable(f.bodies[s]) || degree[key(f.bodies[s])] != 2) continue;
       std::uint32_t& other = first_at[key(f.bodies[s])];
@@ -76,7 +79,7 @@ void JointChainSolver::build(IdPool<Joint>& joints, const std::vector<std::uint3
         other = k;
         continue;
       }
-      const JointFrame& g = joints[kept[other]].frame;
+      const JointEnds& g = ends[kept_positions[other]];
       const int t = g.bodies[0].solver == f.bodies[s].solver && movable(g.bodies[0]) ? 0 : 1;
       // Two joints from this body to one other body, or to two fixed ones, pin it twice: their
       // four rows on its three freedoms are redundant and the direct solve's pivot would
@@ -123,6 +126,7 @@ void JointChainSolver::build(IdPool<Joint>& joints, const std::vector<std::uint3
     while (at != kNone) {
       visited[at] = true;
       chain_joints_.push_back(kept[at]);
+      chain_positions_.push_back(kept_positions[at]);
       std::get<RevoluteJoint>(joints[kept[at]].kind).direct = true;
       const auto& n = neighbour[at];
       const int side = n[0] != prev && n[0] != kNone ? 0 : (n[1] != prev && n[1] != kNone ? 1 : -1);

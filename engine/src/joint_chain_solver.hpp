@@ -1,6 +1,8 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -18,18 +20,28 @@ namespace mink::detail {
 // path form a block-tridiagonal system, solved exactly in linear time (block Thomas
 // algorithm) in every solve and relax pass, with the same softness as the one-joint rows.
 // Their other rows (springs, motors, limits) and every other joint stay one at a time.
+// A joint's two bodies as its frame has them for the step, and whether it is a revolute.
+struct JointEnds {
+  std::array<JointBody, 2> bodies{};
+  bool revolute = false;
+};
+
 class JointChainSolver {
  public:
-  // Finds the paths among `order`'s revolute joints and marks their joints as solved here
-  // (none when not `enabled`: every revolute then solves its own point row).
-  void build(IdPool<Joint>& joints, const std::vector<std::uint32_t>& order, bool enabled);
+  // Finds the paths among `order`'s revolute joints (`ends`: per place in `order`) and marks
+  // their joints as solved here (none when not `enabled`: every revolute then solves its own
+  // point row). A revolute joint's `direct` must be false until then.
+  void build(IdPool<Joint>& joints, const std::vector<std::uint32_t>& order,
+             std::span<const JointEnds> ends, bool enabled);
   void solve(IdPool<Joint>& joints, SolverBody* bodies, bool use_bias);
   std::size_t chained_joints() const { return chain_joints_.size(); }
+  // Where the chained joints are in `order`.
+  const std::vector<std::uint32_t>& chain_positions() const { return chain_positions_; }
 
  private:
   // Per path: [begin, end) into chain_joints_.
   std::vector<std::uint32_t> path_begin_;
-  std::vector<std::uint32_t> chain_joints_;
+  std::vector<std::uint32_t> chain_joints_, chain_positions_;
   // Per chained joint: which side (0: A, 1: B) of it the next joint shares a body on, and
   // which side of the next joint that body is.
   std::vector<std::uint8_t> next_side_, next_other_side_;

@@ -104,8 +104,10 @@ inline Real delta_angle(const SolverBody& b) {
 }
 
 // Applies impulse `p` at offset `r` (and angular impulse `l`) to B and the opposite to A.
-inline void apply_pair(SolverBody& a, SolverBody& b, const JointFrame& f, const Vec2& ra,
-                       const Vec2& rb, const Vec2& p, Real l) {
+// `Frame`: a JointFrame, or a PinRow (joint_rows.hpp), which holds the same fields.
+template <typename Frame>
+inline void apply_pair(SolverBody& a, SolverBody& b, const Frame& f, const Vec2& ra, const Vec2& rb,
+                       const Vec2& p, Real l) {
   const JointBody& ja = f.bodies[0];
   const JointBody& jb = f.bodies[1];
   a.vx -= ja.inv_mass * p.x();

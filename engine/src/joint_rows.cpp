@@ -42,8 +42,8 @@ void set_anchors(JointFrame& frame, const Vec2& local_anchor_a, const Vec2& loca
   frame.delta_center = b.center - a.center;
 }
 
-void warm_start_point(SolverBody* bodies, const JointFrame& frame, const Vec2& linear,
-                      Real angular) {
+template <typename Frame>
+void warm_start_point(SolverBody* bodies, const Frame& frame, const Vec2& linear, Real angular) {
   SolverBody& a = bodies[frame.bodies[0].solver];
   SolverBody& b = bodies[frame.bodies[1].solver];
   const Vec2 ra = delta_rotation(a).apply(frame.anchor_a);
@@ -51,7 +51,8 @@ void warm_start_point(SolverBody* bodies, const JointFrame& frame, const Vec2& l
   apply_pair(a, b, frame, ra, rb, linear, angular);
 }
 
-CurrentAnchors current_anchors(const JointFrame& frame, const SolverBody& a, const SolverBody& b) {
+template <typename Frame>
+CurrentAnchors current_anchors(const Frame& frame, const SolverBody& a, const SolverBody& b) {
   CurrentAnchors c;
   c.ra = delta_rotation(a).apply(frame.anchor_a);
   c.rb = delta_rotation(b).apply(frame.anchor_b);
@@ -68,7 +69,8 @@ Vec2 point_velocity(const CurrentAnchors& c, const SolverBody& a, const SolverBo
 
 // The impulse that changes the anchors' relative velocity by `dv`: K^-1 dv, with K the point
 // row's 2x2 effective mass matrix at the current anchors.
-Vec2 point_impulse(const JointFrame& frame, const CurrentAnchors& c, const Vec2& dv) {
+template <typename Frame>
+Vec2 point_impulse(const Frame& frame, const CurrentAnchors& c, const Vec2& dv) {
   const Real ma = frame.bodies[0].inv_mass, mb = frame.bodies[1].inv_mass;
   const Real ia = frame.bodies[0].inv_inertia, ib = frame.bodies[1].inv_inertia;
   const Real k11 = ma + mb + c.ra.y() * c.ra.y() * ia + c.rb.y() * c.rb.y() * ib;
@@ -81,8 +83,8 @@ Vec2 point_impulse(const JointFrame& frame, const CurrentAnchors& c, const Vec2&
 
 }  // namespace
 
-void solve_point(SolverBody& a, SolverBody& b, const JointFrame& frame, bool use_bias,
-                 Vec2& impulse) {
+template <typename Frame>
+void solve_point(SolverBody& a, SolverBody& b, const Frame& frame, bool use_bias, Vec2& impulse) {
   const CurrentAnchors c = current_anchors(frame, a, b);
   Vec2 bias{0, 0};
   Real mass_scale = 1, impulse_scale = 0;
@@ -96,6 +98,13 @@ void solve_point(SolverBody& a, SolverBody& b, const JointFrame& frame, bool use
   impulse += p;
   apply_pair(a, b, frame, c.ra, c.rb, p, 0);
 }
+
+template CurrentAnchors current_anchors(const JointFrame&, const SolverBody&, const SolverBody&);
+template CurrentAnchors current_anchors(const PinRow&, const SolverBody&, const SolverBody&);
+template void warm_start_point(SolverBody*, const JointFrame&, const Vec2&, Real);
+template void warm_start_point(SolverBody*, const PinRow&, const Vec2&, Real);
+template void solve_point(SolverBody&, SolverBody&, const JointFrame&, bool, Vec2&);
+template void solve_point(SolverBody&, SolverBody&, const PinRow&, bool, Vec2&);
 
 void solve_point_spring(SolverBody& a, SolverBody& b, const JointFrame& frame,
                         const Softness& spring, Vec2& impulse) {

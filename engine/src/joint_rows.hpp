@@ -26,20 +26,34 @@ void drop_switched_off(Kind& joint) {
 // Sets the frame's anchors (from each centre of mass, world-rotated) from body-local anchors.
 void set_anchors(JointFrame& frame, const Vec2& local_anchor_a, const Vec2& local_anchor_b);
 
+// A revolute joint that is only its point row (no spring, motor or limit, not solved in a
+// direct chain) as the solver reads it every substep, with its impulse: 136 bytes, kept in
+// solve order, where the joint's record is a kilobyte a large net would drag through the
+// cache three times a substep. Its fields are named as a JointFrame's, so the point row's
+// functions below take either and compute the same bits.
+struct PinRow {
+  std::array<JointBody, 2> bodies{};
+  Vec2 anchor_a{0, 0}, anchor_b{0, 0}, delta_center{0, 0};
+  Softness soft;
+  Vec2 impulse{0, 0};
+};
+
 // The anchors now: their offsets from the centres of mass, and B's anchor minus A's.
 struct CurrentAnchors {
   Vec2 ra{0, 0}, rb{0, 0}, separation{0, 0};
 };
-CurrentAnchors current_anchors(const JointFrame& frame, const SolverBody& a, const SolverBody& b);
+// `Frame`, here and below: a JointFrame or a PinRow.
+template <typename Frame>
+CurrentAnchors current_anchors(const Frame& frame, const SolverBody& a, const SolverBody& b);
 
 // Warm starts a point-and-angle joint (revolute, weld, motor joint): `linear` at the anchors
 // as they are now, `angular` on the relative angle.
-void warm_start_point(SolverBody* bodies, const JointFrame& frame, const Vec2& linear,
-                      Real angular);
+template <typename Frame>
+void warm_start_point(SolverBody* bodies, const Frame& frame, const Vec2& linear, Real angular);
 
 // B's anchor held on A's: a 2x2 block row. `impulse` accumulates.
-void solve_point(SolverBody& a, SolverBody& b, const JointFrame& frame, bool use_bias,
-                 Vec2& impulse);
+template <typename Frame>
+void solve_point(SolverBody& a, SolverBody& b, const Frame& frame, bool use_bias, Vec2& impulse);
 
 // B's anchor held on A's by a spring (weld springs): soft with `spring` in both passes, as a
 // spring is a force and not an error to push out.

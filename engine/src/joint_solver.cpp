@@ -16,8 +16,39 @@ using detail::Joint;
 
 namespace detail {
 
+void JointStages::gather(std::uint32_t position, Joint& joint) {
+  const JointFrame& frame = joint.frame;
+  auto* revolute = std::get_if<RevoluteJoint>(&joint.kind);
+  ends_[position] = {{frame.bodies[0], frame.bodies[1]}, revolute != nullptr};
+  if (revolute == nullptr) return;
+  revolute->direct = false;
+  if (revolute->angle_rows) return;
+  const RevoluteJointDef& def = revolute->def;
+  // Switched off rows have no impulse left (prepare drops them): the warm start's angular
+  // impulse is zero, as a pin's.
+  if (def.spring.enabled || def.motor.enabled || def.limit.enabled) return;
+  PinRow& row = pins_[position];
+  row.bodies = {frame.bodies[0], frame.bodies[1]};
+  row.anchor_a = frame.anchor_a;
+  row.anchor_b = frame.anchor_b;
+  row.delta_center = frame.delta_center;
+  row.soft = frame.soft;
+  row.impulse = revolute->linear_impulse;
+  is_pin_[position] = 1;
+}
+
+void JointStages::build_chains(bool enabled) {
+  chains_.build(*joints_, *order_, ends_, enabled);
+  for (const std::uint32_t position : chains_.chain_positions()) is_pin_[position] = 0;
+}
+
 void JointStages::warm_start(SolverBody* bodies, std::uint32_t begin, std::uint32_t end) {
   for (std::uint32_t i = begin; i < end; ++i) {
+    if (is_pin_[i] != 0) {
+      const PinRow& row = pins_[i];
+      warm_start_point(bodies, row, row.impulse, 0);
+      continue;
+    }
     Joint& joint = (*joints_)[(*order_)[i]];
     std::visit([&](auto& k) { detail::warm_start(k, joint.frame, bodies); }, joint.kind);
   }
@@ -31,6 +62,12 @@ void JointStages::solve_chains(SolverBody* bodies, bool use_bias) {
 
 void JointStages::solve(SolverBody* bodies, bool use_bias, std::uint32_t begin, std::uint32_t end) {
   for (std::uint32_t i = begin; i < end; ++i) {
+    if (is_pin_[i] != 0) {
+      PinRow& row = pins_[i];
+      solve_point(bodies[row.bodies[0].solver], bodies[row.bodies[1].solver], row, use_bias,
+                  row.impulse);
+      continue;
+    }
     Joint& joint = (*joints_)[(*order_)[i]];
     std::visit([&](auto& k) { detail::solve(k, joint.frame, bodies, use_bias); }, joint.kind);
   }
@@ -39,39 +76,65 @@ void JointStages::solve(SolverBody* bodies, bool use_bias, std::uint32_t begin, 
 }  // namespace detail
 
 void WorldState::prepare_joints() {
-  // The joints of moving bodies: marked from the bodies' lists, read off in slot order into
-  // their colours (the overflow last), which is the order they are solved in.
-  joint_marks.assign((joints.size() + 63) / 64, 0);
-  for (const std::uint32_t i : solver_to_body) {
-    for (const std::uint32_t j : bodies[i].joints) {
-      joint_marks[j >> 6] |= std::uint64_t{1} << (j & 63);
-    }
-  }
+  // The joints of moving bodies: marked from the bodies' lists (in parallel, an atomic or per
+  // word when other threads mark too), those with a disabled body or none dynamic unmarked in
+  // parallel, word by word, then read off in slot order into their colours (the overflow
+  // last), which is the order they are solved in.
   constexpr std::size_t kColors = detail::kGraphColors + 1;
+  joint_marks.assign((joints.size() + 63) / 64, 0);
+  joint_slot_color.resize(joints.size());
+  const bool concurrent = tasks.workers() > 1;
+  tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 256,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       for (std::uint32_t k = begin; k < end; ++k) {
+                         for (const std::uint32_t j : bodies[solver_to_body[k]].joints) {
+                           detail::set_mark(joint_marks, j, concurrent);
+                         }
+                       }
+                     });
+  tasks.parallel_for(
+      static_cast<std::uint32_t>(joint_marks.size()), 16,
+      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+        for (std::uint32_t word = begin; word < end; ++word) {
+          std::uint64_t kept = joint_marks[word];
+          for (std::uint64_t bits = kept; bits != 0; bits &= bits - 1) {
+            const int bit = std::countr_zero(bits);
+            const Joint& joint = joints[word * 64 + static_cast<std::uint32_t>(bit)];
+            bool enabled = true, dynamic = false;
+            for (int k = 0; k < joint.body_count; ++k) {
+              const Body& b = bodies[joint.body[k]];
+              enabled = enabled && b.enabled;
+              dynamic = dynamic || b.type == BodyType::dynamic;
+            }
+            if (!enabled || !dynamic) kept &= ~(std::uint64_t{1} << bit);
+            joint_slot_color[word * 64 + static_cast<std::uint32_t>(bit)] =
+                static_cast<std::uint8_t>(std::min<std::size_t>(joint.color, kColors - 1));
+          }
+          joint_marks[word] = kept;
+        }
+      });
   joint_color_begin.assign(kColors + 1, 0);
   step_joints.clear();
   for (std::size_t word = 0; word < joint_marks.size(); ++word) {
     for (std::uint64_t bits = joint_marks[word]; bits != 0; bits &= bits - 1) {
       const auto j = static_cast<std::uint32_t>(word * 64 + std::countr_zero(bits));
-      const Joint& joint = joints[j];
-      bool enabled = true, dynamic = false;
-      for (int k = 0; k < joint.body_count; ++k) {
-        const Body& b = bodies[joint.body[k]];
-        enabled = enabled && b.enabled;
-        dynamic = dynamic || b.type == BodyType::dynamic;
-      }
-      if (!enabled || !dynamic) continue;
       step_joints.push_back(j);
-      ++joint_color_begin[std::min<std::size_t>(joint.color, kColors - 1) + 1];
+      ++joint_color_begin[joint_slot_color[j] + 1];
     }
   }
   for (std::size_t c = 1; c <= kColors; ++c) joint_color_begin[c] += joint_color_begin[c - 1];
+  // step_joints in colour order; joint_order keeps them in slot order, the order of their
+  // records in memory, which the passes over every joint's record follow.
   joint_order.resize(step_joints.size());
+  joint_position.resize(step_joints.size());
   {
     std::vector<std::uint32_t>& fill = joint_fill;
     fill.assign(joint_color_begin.begin(), joint_color_begin.end() - 1);
-    for (const std::uint32_t j : step_joints) {
-      joint_order[fill[std::min<std::size_t>(joints[j].color, kColors - 1)]++] = j;
+    for (std::size_t k = 0; k < step_joints.size(); ++k) {
+      const std::uint32_t j = step_joints[k];
+      const std::uint32_t position = fill[joint_slot_color[j]]++;
+      joint_order[position] = j;
+      joint_position[k] = position;
     }
     step_joints.swap(joint_order);
   }
@@ -98,15 +161,18 @@ void WorldState::prepare_joints() {
   const auto first_own = static_cast<std::uint32_t>(solver_bodies.size());
   solver_bodies.resize(first_own + joint_own_slots.back());
   solver_params.resize(solver_bodies.size());
+  joint_stages.set(&joints, &step_joints, &joint_color_begin);
+  joint_stages.reset(step_joints.size());
   // Each joint's frame is its own, so they are made in parallel.
   tasks.parallel_for(static_cast<std::uint32_t>(step_joints.size()), 64,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-                       for (std::uint32_t i = begin; i < end; ++i) {
-                         prepare_joint(step_joints[i], first_own + joint_own_slots[i], h, soft);
+                       for (std::uint32_t k = begin; k < end; ++k) {
+                         const std::uint32_t j = joint_order[k], i = joint_position[k];
+                         prepare_joint(j, first_own + joint_own_slots[i], h, soft);
+                         joint_stages.gather(i, joints[j]);
                        }
                      });
-  joint_stages.set(&joints, &step_joints, &joint_color_begin);
-  joint_stages.chains().build(joints, step_joints, def.direct_joint_chains);
+  joint_stages.build_chains(def.direct_joint_chains);
 }
 
 void WorldState::prepare_joint(std::uint32_t j, std::uint32_t own_slot, Real h,
@@ -114,7 +180,10 @@ void WorldState::prepare_joint(std::uint32_t j, std::uint32_t own_slot, Real h,
   {
     Joint& joint = joints[j];
     detail::JointFrame& frame = joint.frame;
-    frame = detail::JointFrame{};
+    // Every field set, rather than the whole frame cleared first: a joint's bodies past its
+    // body count are never written (zero since it was made), and a net's frames are megabytes.
+    frame.anchor_a = frame.anchor_b = frame.delta_center = Vec2(0, 0);
+    frame.coordinate_a = frame.coordinate_b = 0;
     frame.h = h;
     frame.inv_h = 1 / h;
     frame.soft = soft;
@@ -127,6 +196,7 @@ void WorldState::prepare_joint(std::uint32_t j, std::uint32_t own_slot, Real h,
       start.center = b.center;
       start.rotation = b.rotation;
       start.local_center = b.local_center;
+      jb.inv_mass = jb.inv_inertia = 0;
       if (s >= 0) {
         jb.inv_mass = solver_info[static_cast<std::size_t>(s)].inv_mass;
         jb.inv_inertia = solver_info[static_cast<std::size_t>(s)].inv_inertia;
@@ -160,25 +230,41 @@ detail::JointBodyState WorldState::finished_body_state(std::uint32_t body) const
 }
 
 void WorldState::finish_joints() {
+  // Each joint's bookkeeping is its own (it reads bodies, writes only itself), so it runs in
+  // parallel, in slot order; the breaks are gathered after.
+  joint_broke.assign(joint_order.size(), 0);
+  tasks.parallel_for(static_cast<std::uint32_t>(joint_order.size()), 64,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       for (std::uint32_t k = begin; k < end; ++k) finish_joint(k);
+                     });
   joint_break_events.clear();
-  for (const std::uint32_t j : step_joints) {
-    Joint& joint = joints[j];
-    joint.reaction =
-        std::visit([&](const auto& k) { return detail::reaction(k, joint.frame); }, joint.kind);
-    const JointBase& b = base(joint);
-    if (joint.reaction.force.norm() > b.break_force ||
-        std::abs(joint.reaction.torque) > b.break_torque) {
-      joint_break_events.push_back(
-          {joint_id(j), joint.reaction.force, joint.reaction.torque, b.user_data});
-    }
-    const detail::JointBodyState sa = finished_body_state(joint.body[0]);
-    const detail::JointBodyState sb = finished_body_state(joint.body[1]);
-    std::visit([&](auto& k) { detail::finish_kind(k, sa, sb); }, joint.kind);
+  for (std::size_t k = 0; k < joint_order.size(); ++k) {
+    if (joint_broke[k] == 0) continue;
+    const std::uint32_t j = joint_order[k];
+    const Joint& joint = joints[j];
+    joint_break_events.push_back(
+        {joint_id(j), joint.reaction.force, joint.reaction.torque, base(joint).user_data});
   }
   std::sort(joint_break_events.begin(), joint_break_events.end(),
             [](const JointBreakEvent& x, const JointBreakEvent& y) {
               return x.joint.index < y.joint.index;
             });
+}
+
+void WorldState::finish_joint(std::uint32_t k) {
+  const std::uint32_t j = joint_order[k];
+  Joint& joint = joints[j];
+  if (const detail::PinRow* pin = joint_stages.pin_at(joint_position[k])) {
+    std::get<detail::RevoluteJoint>(joint.kind).linear_impulse = pin->impulse;
+  }
+  joint.reaction =
+      std::visit([&](const auto& kind) { return detail::reaction(kind, joint.frame); }, joint.kind);
+  const JointBase& b = base(joint);
+  joint_broke[k] = joint.reaction.force.norm() > b.break_force ||
+                   std::abs(joint.reaction.torque) > b.break_torque;
+  const detail::JointBodyState sa = finished_body_state(joint.body[0]);
+  const detail::JointBodyState sb = finished_body_state(joint.body[1]);
+  std::visit([&](auto& kind) { detail::finish_kind(kind, sa, sb); }, joint.kind);
 }
 
 }  // namespace mink

@@ -7,6 +7,7 @@
 #include "id_pool.hpp"
 #include "joint.hpp"
 #include "joint_chain_solver.hpp"
+#include "joint_rows.hpp"
 
 namespace mink::detail {
 
@@ -25,15 +26,35 @@ class JointStages {
     color_begin_ = color_begin;
   }
   bool empty() const { return order_ == nullptr || order_->empty(); }
+  // Room for each joint of the order; none is a pin until gather() makes it one.
+  void reset(std::size_t joint_count) {
+    pins_.resize(joint_count);
+    ends_.resize(joint_count);
+    is_pin_.assign(joint_count, 0);
+  }
+  // Takes what the step's passes read of the joint at `position` of the order, from its
+  // prepared frame, while its record is in cache: its ends for the chains, and, if it is only
+  // a point row, a pin row it is then solved from instead of its record. Thread safe across
+  // positions.
+  void gather(std::uint32_t position, Joint& joint);
+  // Finds the chains (JointChainSolver::build); their joints are not pins.
+  void build_chains(bool enabled);
+  // The pin row at `position` of the order, whose impulse its joint takes back once the
+  // substeps are done; nullptr when that joint is not a pin.
+  const PinRow* pin_at(std::uint32_t position) const {
+    return is_pin_[position] != 0 ? &pins_[position] : nullptr;
+  }
   const std::vector<std::uint32_t>& color_begin() const { return *color_begin_; }
   // Joints order[begin, end).
   void warm_start(SolverBody* bodies, std::uint32_t begin, std::uint32_t end);
   void solve(SolverBody* bodies, bool use_bias, std::uint32_t begin, std::uint32_t end);
   void solve_chains(SolverBody* bodies, bool use_bias);
-  JointChainSolver& chains() { return chains_; }
 
  private:
   JointChainSolver chains_;
+  std::vector<PinRow> pins_;          // per position of the order: valid where is_pin_
+  std::vector<JointEnds> ends_;       // per position of the order
+  std::vector<std::uint8_t> is_pin_;  // bytes, not bits: set from several threads
   IdPool<Joint>* joints_ = nullptr;
   const std::vector<std::uint32_t>* order_ = nullptr;
   const std::vector<std::uint32_t>* color_begin_ = nullptr;

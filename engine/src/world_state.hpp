@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -29,6 +30,17 @@ void check_world_def(const WorldDef& def);
 void check_step_length(Real time_step, int substeps, const std::string& what);
 // Finite and within max_setting_magnitude on each axis; `what` names it in the message.
 void check_gravity(const Vec2& gravity, const std::string& what);
+
+// Sets bit `index` of `marks`. `concurrent`: other threads set bits at the same time, so the
+// word is set with an atomic or (a bit set twice is set all the same).
+inline void set_mark(std::vector<std::uint64_t>& marks, std::uint32_t index, bool concurrent) {
+  const std::uint64_t bit = std::uint64_t{1} << (index & 63);
+  if (concurrent) {
+    std::atomic_ref<std::uint64_t>(marks[index >> 6]).fetch_or(bit, std::memory_order_relaxed);
+  } else {
+    marks[index >> 6] |= bit;
+  }
+}
 }  // namespace detail
 
 // Everything a World owns. Each concept's data and operations live in their own file (body,
@@ -96,12 +108,18 @@ struct WorldState {
   std::vector<detail::SolverBodyInfo> solver_info;
   std::vector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
   std::vector<detail::ConstraintBodies> constraint_bodies, sorted_bodies;
+  std::vector<detail::ConstraintBodies>
+      step_constraint_bodies;  // per step contact, while gathering
   detail::ContactSolver contact_solver;
   std::int32_t still_body = 0;                   // the solver body standing in for the unmoving
   std::vector<std::uint32_t> step_joints;        // joints of moving bodies this step, solve order
   std::vector<std::uint32_t> joint_color_begin;  // where each colour starts in step_joints
   std::vector<std::uint64_t> joint_marks;        // one bit per joint slot, while gathering
-  std::vector<std::uint32_t> joint_order, joint_fill;
+  std::vector<std::uint8_t> joint_slot_color;    // per joint slot: its colour, while gathering
+  std::vector<std::uint32_t> joint_order;        // step_joints in slot order
+  std::vector<std::uint32_t> joint_position;     // per joint_order entry: its place in step_joints
+  std::vector<std::uint32_t> joint_fill;
+  std::vector<std::uint8_t> joint_broke;       // per joint_order entry, while finishing
   std::vector<std::uint32_t> joint_own_slots;  // per step joint: its first own solver record
   detail::JointStages joint_stages;
   std::vector<std::uint64_t> island_stamp;  // per body: the step whose island pass reached it
@@ -178,6 +196,7 @@ struct WorldState {
   void prepare_joint(std::uint32_t index, std::uint32_t own_slot, Real h,
                      const detail::Softness& soft);
   void finish_joints();
+  void finish_joint(std::uint32_t k);  // joint_order[k]
   // solver_stages.cpp
   void prepare_contacts();
   void solve();
