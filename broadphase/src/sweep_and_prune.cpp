@@ -224,11 +224,27 @@ void SweepAndPrune::update_pairs(PairEvents& events) {
   update_structure();
   find_begun(events);
   for (const ProxyId id : touched_ids_) {
+    if ((touched_[id] & (kCreated | kDestroyed)) != 0 || store_.is_fixed(id)) fixed_stale_ = true;
     if ((touched_[id] & kDestroyed) == 0) committed_[id] = store_.fat(id);
     touched_[id] = 0;
   }
   touched_ids_.clear();
   store_.release_destroyed();
+  if (fixed_stale_) refresh_fixed();
+}
+
+void SweepAndPrune::refresh_fixed() {
+  fixed_entries_.clear();
+  fixed_reach0_ = 0;
+  for (const Entry& e : entries_) {
+    if (e.is_fixed == 0) continue;
+    fixed_entries_.push_back(e);
+    fixed_reach0_ = std::max(fixed_reach0_, e.hi0 - e.lo0);
+  }
+  std::sort(fixed_entries_.begin(), fixed_entries_.end(), [](const Entry& x, const Entry& y) {
+    return x.lo0 != y.lo0 ? x.lo0 < y.lo0 : x.id < y.id;
+  });
+  fixed_stale_ = false;
 }
 
 // Pairs that no longer overlap. Only a pair with a touched member can end, and testing it on
@@ -474,6 +490,7 @@ void SweepAndPrune::recompute_slots() {
 
 void SweepAndPrune::rebuild() {
   ++rebuild_count_;
+  fixed_stale_ = true;
   built_ = true;
   entries_.clear();
   oversized_.clear();
@@ -571,9 +588,25 @@ void SweepAndPrune::query(const Aabb& box, std::vector<ProxyId>& out) const {
 
 void SweepAndPrune::query_fixed(const Aabb& box, std::vector<ProxyId>& out) const {
   ProxyStore::check_box(box, "query_fixed");
-  sweep(oriented(box), [&](const Entry& e) {
+  const Entry q = oriented(box);
+  const auto found = [&](const Entry& e) {
     if (e.is_fixed != 0 && touched_[e.id] == 0) out.push_back(e.id);
-  });
+  };
+  if (fixed_stale_) {
+    sweep(q, found);
+  } else {
+    // An entry overlapping q starts at most the largest fixed extent before it (a step below
+    // for each rounding: the extent's and the subtraction's).
+    const Real from = below(below(q.lo0 - fixed_reach0_ * (1 + kReachSlack)));
+    auto it = std::lower_bound(fixed_entries_.begin(), fixed_entries_.end(), from,
+                               [](const Entry& e, Real x) { return e.lo0 < x; });
+    for (; it != fixed_entries_.end() && it->lo0 <= q.hi0; ++it) {
+      if (overlap(*it, q)) found(*it);
+    }
+    for (const Entry& e : oversized_) {
+      if (overlap(e, q)) found(e);
+    }
+  }
   for (const ProxyId id : touched_ids_) {
     if ((touched_[id] & kDestroyed) == 0 && store_.is_fixed(id) && store_.fat(id).overlaps(box)) {
       out.push_back(id);
@@ -703,6 +736,7 @@ void SweepAndPrune::save(SaveArchive& archive) const {
 }
 void SweepAndPrune::load(LoadArchive& archive) {
   fields(archive);
+  refresh_fixed();
 }
 
 }  // namespace mink

@@ -111,6 +111,8 @@ class SweepAndPrune final : public Broadphase {
   bool sink(std::size_t i, std::size_t& shifts);
   void sort_changed();
   void rebuild();
+  /// Gathers fixed_entries_ from entries_.
+  void refresh_fixed();
   /// Also refreshes band_begin_, which every change of entries_ invalidates.
   void recompute_slots();
   void find_band_starts();
@@ -125,6 +127,13 @@ class SweepAndPrune final : public Broadphase {
   std::vector<Aabb> committed_;        ///< per id: fat box as of the last update
   std::vector<std::uint8_t> touched_;  ///< per id: Touch bits
   std::vector<ProxyId> touched_ids_;
+  /// The fixed entries of entries_ by lower bound on the sweep axis, and their largest extent
+  /// there, for query_fixed(): fixed obstacles are few among many moving boxes, which a sweep
+  /// of the bands would step over one by one. Stale (and not used) until the first update
+  /// after a fixed proxy changed or the array was laid out anew.
+  std::vector<Entry> fixed_entries_;
+  Real fixed_reach0_ = 0;
+  bool fixed_stale_ = true;
 
   // Scratch, kept to avoid allocating every step.
   std::vector<std::uint32_t> changed_slots_;
