@@ -284,6 +284,14 @@ void WorldState::solve_continuous() {
                          bx = continuous.fast[y].box.lower.x();
               return ax != bx ? ax < bx : x < y;
             });
+  // Where a body's scan may start: no box before the first place whose running largest upper
+  // x reaches the body's lower x can overlap it.
+  continuous.fast_reach_x.resize(continuous.fast_by_x.size());
+  Real reach = -std::numeric_limits<Real>::infinity();
+  for (std::size_t k = 0; k < continuous.fast_by_x.size(); ++k) {
+    reach = std::max(reach, continuous.fast[continuous.fast_by_x[k]].box.upper.x());
+    continuous.fast_reach_x[k] = reach;
+  }
 
   tasks.parallel_for(count, 4, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
     std::vector<ProxyId> proxies;
@@ -346,7 +354,11 @@ void WorldState::solve_continuous() {
       }
       // Other fast bodies (a bullet has met every dynamic shape already).
       if (fast.bullet || !def.continuous_fast_pairs) continue;
-      for (const std::uint32_t j : continuous.fast_by_x) {
+      const auto first = std::lower_bound(continuous.fast_reach_x.begin(),
+                                          continuous.fast_reach_x.end(), fast.box.lower.x());
+      for (auto k = static_cast<std::size_t>(first - continuous.fast_reach_x.begin());
+           k < continuous.fast_by_x.size(); ++k) {
+        const std::uint32_t j = continuous.fast_by_x[k];
         const FastBody& other = continuous.fast[j];
         if (other.box.lower.x() > fast.box.upper.x()) break;
         if (j == i || other.bullet || !other.box.overlaps(fast.box)) continue;

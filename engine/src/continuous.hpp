@@ -39,6 +39,7 @@ struct ContinuousState {
   }
   std::vector<FastBody> fast;
   std::vector<std::uint32_t> fast_by_x;  // indices into `fast`, by their box's lower x
+  std::vector<Real> fast_reach_x;        // per place in fast_by_x: the largest upper x so far
   std::vector<std::vector<std::uint32_t>> candidates;
   std::size_t hits = 0;  // fast bodies stopped short this step
 };
