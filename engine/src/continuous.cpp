@@ -61,6 +61,9 @@ Sweep WorldState::body_sweep(std::uint32_t body) const {
 
 namespace {
 
+// A fast body's box this many times wider than the middle one's is scanned apart.
+constexpr Real kWideFactor = 8;
+
 Aabb merge(const Aabb& a, const Aabb& b) {
   return {a.lower.cwiseMin(b.lower), a.upper.cwiseMax(b.upper)};
 }
@@ -147,13 +150,17 @@ bool clear_of_a_face(const ShapeGeometry& moving, const Sweep& sweep, const Shap
 // travel there plus its turn against that frame at its extent. A body slow in another's frame
 // is the speculative contacts' to keep from it, as a slow body is beside a still one: bodies
 // carried round by a turning kinematic body, or falling together, need no time of impact.
-Real travel_relative_to(const Sweep& moving, Real extent, const Sweep& frame) {
-  const Rotation start = Rotation::from_angle(frame.angle0);
-  const Rotation end = Rotation::from_angle(frame.angle1);
+// `start` and `end`: the frame's rotations at the ends of its sweep.
+Real travel_relative_to(const Sweep& moving, Real extent, const Sweep& frame, const Rotation& start,
+                        const Rotation& end) {
   const Vec2 travel = end.apply_inverse(moving.center1 - frame.center1) -
                       start.apply_inverse(moving.center0 - frame.center0);
   const Real turn = (moving.angle1 - moving.angle0) - (frame.angle1 - frame.angle0);
   return travel.norm() + std::abs(turn) * extent;
+}
+Real travel_relative_to(const Sweep& moving, Real extent, const Sweep& frame) {
+  return travel_relative_to(moving, extent, frame, Rotation::from_angle(frame.angle0),
+                            Rotation::from_angle(frame.angle1));
 }
 
 bool is_still(const Sweep& sweep) {
@@ -270,14 +277,30 @@ void WorldState::solve_continuous() {
         FastBody& fast = continuous.fast[i];
         fast.sweep = solver_sweep(fast.solver_index);
         fast.has_sweep = true;
+        fast.rotation0 = Rotation::from_angle(fast.sweep.angle0);
+        fast.rotation1 = Rotation::from_angle(fast.sweep.angle1);
       }
     });
   }
   // Fast bodies against each other: their boxes by lower x, so each finds its neighbours by a
-  // short scan.
+  // short scan, those many times wider than the middle one apart.
   continuous.fast_by_x.clear();
-  if (def.continuous_fast_pairs) continuous.fast_by_x.resize(count);
-  for (std::uint32_t i = 0; i < continuous.fast_by_x.size(); ++i) continuous.fast_by_x[i] = i;
+  continuous.fast_wide.clear();
+  if (def.continuous_fast_pairs) {
+    std::vector<Real>& widths = continuous.widths;
+    widths.resize(count);
+    for (std::uint32_t i = 0; i < count; ++i) {
+      widths[i] = continuous.fast[i].box.upper.x() - continuous.fast[i].box.lower.x();
+    }
+    const auto middle = widths.begin() + count / 2;
+    std::nth_element(widths.begin(), middle, widths.end());
+    const Real wide = kWideFactor * *middle;
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const Aabb& box = continuous.fast[i].box;
+      (box.upper.x() - box.lower.x() > wide ? continuous.fast_wide : continuous.fast_by_x)
+          .push_back(i);
+    }
+  }
   std::sort(continuous.fast_by_x.begin(), continuous.fast_by_x.end(),
             [&](std::uint32_t x, std::uint32_t y) {
               const Real ax = continuous.fast[x].box.lower.x(),
@@ -286,10 +309,13 @@ void WorldState::solve_continuous() {
             });
   // Where a body's scan may start: no box before the first place whose running largest upper
   // x reaches the body's lower x can overlap it.
+  continuous.fast_boxes_by_x.resize(continuous.fast_by_x.size());
   continuous.fast_reach_x.resize(continuous.fast_by_x.size());
   Real reach = -std::numeric_limits<Real>::infinity();
   for (std::size_t k = 0; k < continuous.fast_by_x.size(); ++k) {
-    reach = std::max(reach, continuous.fast[continuous.fast_by_x[k]].box.upper.x());
+    const Aabb& box = continuous.fast[continuous.fast_by_x[k]].box;
+    continuous.fast_boxes_by_x[k] = box;
+    reach = std::max(reach, box.upper.x());
     continuous.fast_reach_x[k] = reach;
   }
 
@@ -354,21 +380,29 @@ void WorldState::solve_continuous() {
       }
       // Other fast bodies (a bullet has met every dynamic shape already).
       if (fast.bullet || !def.continuous_fast_pairs) continue;
+      const auto meet = [&](std::uint32_t j) {
+        const FastBody& other = continuous.fast[j];
+        if (j == i || other.bullet) return;
+        const Body& other_body = bodies[other.body];
+        const Real limit = std::min(slow, other_body.continuous_threshold * other_body.min_extent);
+        if (travel_relative_to(fast.sweep, body.extent, other.sweep, other.rotation0,
+                               other.rotation1) <= limit &&
+            travel_relative_to(other.sweep, other_body.extent, fast.sweep, fast.rotation0,
+                               fast.rotation1) <= limit) {
+          return;
+        }
+        for (const std::uint32_t s : bodies[other.body].shapes) sweep_pair(fast, s, other.sweep);
+      };
       const auto first = std::lower_bound(continuous.fast_reach_x.begin(),
                                           continuous.fast_reach_x.end(), fast.box.lower.x());
       for (auto k = static_cast<std::size_t>(first - continuous.fast_reach_x.begin());
            k < continuous.fast_by_x.size(); ++k) {
-        const std::uint32_t j = continuous.fast_by_x[k];
-        const FastBody& other = continuous.fast[j];
-        if (other.box.lower.x() > fast.box.upper.x()) break;
-        if (j == i || other.bullet || !other.box.overlaps(fast.box)) continue;
-        const Body& other_body = bodies[other.body];
-        const Real limit = std::min(slow, other_body.continuous_threshold * other_body.min_extent);
-        if (travel_relative_to(fast.sweep, body.extent, other.sweep) <= limit &&
-            travel_relative_to(other.sweep, other_body.extent, fast.sweep) <= limit) {
-          continue;
-        }
-        for (const std::uint32_t s : bodies[other.body].shapes) sweep_pair(fast, s, other.sweep);
+        const Aabb& box = continuous.fast_boxes_by_x[k];
+        if (box.lower.x() > fast.box.upper.x()) break;
+        if (box.overlaps(fast.box)) meet(continuous.fast_by_x[k]);
+      }
+      for (const std::uint32_t j : continuous.fast_wide) {
+        if (continuous.fast[j].box.overlaps(fast.box)) meet(j);
       }
     }
   });

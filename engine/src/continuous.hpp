@@ -16,6 +16,8 @@ struct FastBody {
   std::uint32_t solver_index = 0;
   Sweep sweep;  // valid once has_sweep: found only for a body with something to meet
   bool has_sweep = false;
+  // The sweep's start and end rotations, for fast bodies meeting each other (set with it then).
+  Rotation rotation0{}, rotation1{};
   Aabb box;
   // Each shape's box over the step lies in its broadphase box: the body's contacts then hold
   // every static and kinematic shape the sweep can meet, and no query is needed.
@@ -38,8 +40,14 @@ struct ContinuousState {
     fast_covered.resize(solver_bodies);
   }
   std::vector<FastBody> fast;
-  std::vector<std::uint32_t> fast_by_x;  // indices into `fast`, by their box's lower x
-  std::vector<Real> fast_reach_x;        // per place in fast_by_x: the largest upper x so far
+  // Indices into `fast` of the boxes of common width, by lower x, with the running largest
+  // upper x along them; and of the few far wider ones (a fast spinning bar), which would
+  // stretch every scan, apart.
+  std::vector<std::uint32_t> fast_by_x;
+  std::vector<Aabb> fast_boxes_by_x;  // their boxes, in that order: a scan reads no FastBody
+  std::vector<Real> fast_reach_x;
+  std::vector<std::uint32_t> fast_wide;
+  std::vector<Real> widths;  // scratch
   std::vector<std::vector<std::uint32_t>> candidates;
   std::size_t hits = 0;  // fast bodies stopped short this step
 };
