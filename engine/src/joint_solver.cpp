@@ -22,11 +22,13 @@ void JointStages::gather(std::uint32_t position, Joint& joint) {
   ends_[position] = {{frame.bodies[0], frame.bodies[1]}, revolute != nullptr};
   if (revolute == nullptr) return;
   revolute->direct = false;
-  if (revolute->angle_rows) return;
   const RevoluteJointDef& def = revolute->def;
   // Switched off rows have no impulse left (prepare drops them): the warm start's angular
   // impulse is zero, as a pin's.
-  if (def.spring.enabled || def.motor.enabled || def.limit.enabled) return;
+  if (revolute->angle_rows || def.spring.enabled || def.motor.enabled || def.limit.enabled) {
+    kind_[position] = RowKind::revolute;
+    return;
+  }
   PinRow& row = pins_[position];
   row.bodies = {frame.bodies[0], frame.bodies[1]};
   row.anchor_a = frame.anchor_a;
@@ -34,19 +36,53 @@ void JointStages::gather(std::uint32_t position, Joint& joint) {
   row.delta_center = frame.delta_center;
   row.soft = frame.soft;
   row.impulse = revolute->linear_impulse;
-  is_pin_[position] = 1;
+  kind_[position] = RowKind::pin;
 }
 
-void JointStages::build_chains(bool enabled) {
+std::size_t JointStages::build_chains(bool enabled) {
   chains_.build(*joints_, *order_, ends_, enabled);
-  for (const std::uint32_t position : chains_.chain_positions()) is_pin_[position] = 0;
+  for (const std::uint32_t position : chains_.chain_positions()) {
+    kind_[position] = RowKind::record;
+  }
+  revolute_positions_.clear();
+  for (std::uint32_t position = 0; position < kind_.size(); ++position) {
+    if (kind_[position] != RowKind::revolute) continue;
+    row_slot_[position] = static_cast<std::uint32_t>(revolute_positions_.size());
+    revolute_positions_.push_back(position);
+  }
+  revolute_rows_.resize(revolute_positions_.size());
+  return revolute_positions_.size();
+}
+
+void JointStages::fill_revolute_row(std::uint32_t position, const Joint& joint) {
+  RevoluteRow& row = revolute_rows_[row_slot_[position]];
+  row.frame = joint.frame;
+  row.joint = std::get<RevoluteJoint>(joint.kind);
+}
+
+void JointStages::store_row(std::uint32_t position, Joint& joint) const {
+  switch (kind_[position]) {
+    case RowKind::record:
+      return;
+    case RowKind::pin:
+      std::get<RevoluteJoint>(joint.kind).linear_impulse = pins_[position].impulse;
+      return;
+    case RowKind::revolute:
+      std::get<RevoluteJoint>(joint.kind) = revolute_rows_[row_slot_[position]].joint;
+      return;
+  }
 }
 
 void JointStages::warm_start(SolverBody* bodies, std::uint32_t begin, std::uint32_t end) {
   for (std::uint32_t i = begin; i < end; ++i) {
-    if (is_pin_[i] != 0) {
+    if (kind_[i] == RowKind::pin) {
       const PinRow& row = pins_[i];
       warm_start_point(bodies, row, row.impulse, 0);
+      continue;
+    }
+    if (kind_[i] == RowKind::revolute) {
+      const RevoluteRow& row = revolute_rows_[row_slot_[i]];
+      detail::warm_start(row.joint, row.frame, bodies);
       continue;
     }
     Joint& joint = (*joints_)[(*order_)[i]];
@@ -62,10 +98,15 @@ void JointStages::solve_chains(SolverBody* bodies, bool use_bias) {
 
 void JointStages::solve(SolverBody* bodies, bool use_bias, std::uint32_t begin, std::uint32_t end) {
   for (std::uint32_t i = begin; i < end; ++i) {
-    if (is_pin_[i] != 0) {
+    if (kind_[i] == RowKind::pin) {
       PinRow& row = pins_[i];
       solve_point(bodies[row.bodies[0].solver], bodies[row.bodies[1].solver], row, use_bias,
                   row.impulse);
+      continue;
+    }
+    if (kind_[i] == RowKind::revolute) {
+      RevoluteRow& row = revolute_rows_[row_slot_[i]];
+      detail::solve(row.joint, row.frame, bodies, use_bias);
       continue;
     }
     Joint& joint = (*joints_)[(*order_)[i]];
@@ -172,7 +213,15 @@ void WorldState::prepare_joints() {
                          joint_stages.gather(i, joints[j]);
                        }
                      });
-  joint_stages.build_chains(def.direct_joint_chains);
+  // Revolute rows are copied once the chains are known (a chain's joints keep their records,
+  // which the chain solver reads), in parallel, each from its record.
+  const auto rows = static_cast<std::uint32_t>(joint_stages.build_chains(def.direct_joint_chains));
+  tasks.parallel_for(rows, 64, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+    for (std::uint32_t r = begin; r < end; ++r) {
+      const std::uint32_t position = joint_stages.revolute_row_position(r);
+      joint_stages.fill_revolute_row(position, joints[step_joints[position]]);
+    }
+  });
 }
 
 void WorldState::prepare_joint(std::uint32_t j, std::uint32_t own_slot, Real h,
@@ -254,9 +303,7 @@ void WorldState::finish_joints() {
 void WorldState::finish_joint(std::uint32_t k) {
   const std::uint32_t j = joint_order[k];
   Joint& joint = joints[j];
-  if (const detail::PinRow* pin = joint_stages.pin_at(joint_position[k])) {
-    std::get<detail::RevoluteJoint>(joint.kind).linear_impulse = pin->impulse;
-  }
+  joint_stages.store_row(joint_position[k], joint);
   joint.reaction =
       std::visit([&](const auto& kind) { return detail::reaction(kind, joint.frame); }, joint.kind);
   const JointBase& b = base(joint);

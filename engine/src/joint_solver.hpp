@@ -26,24 +26,30 @@ class JointStages {
     color_begin_ = color_begin;
   }
   bool empty() const { return order_ == nullptr || order_->empty(); }
-  // Room for each joint of the order; none is a pin until gather() makes it one.
+  // Room for each joint of the order; each is solved from its record until gather() says
+  // otherwise.
   void reset(std::size_t joint_count) {
     pins_.resize(joint_count);
     ends_.resize(joint_count);
-    is_pin_.assign(joint_count, 0);
+    row_slot_.resize(joint_count);
+    kind_.assign(joint_count, RowKind::record);
   }
   // Takes what the step's passes read of the joint at `position` of the order, from its
   // prepared frame, while its record is in cache: its ends for the chains, and, if it is only
-  // a point row, a pin row it is then solved from instead of its record. Thread safe across
-  // positions.
+  // a point row, a pin row it is then solved from instead of its record; any other revolute
+  // joint is marked for a revolute row. Thread safe across positions.
   void gather(std::uint32_t position, Joint& joint);
-  // Finds the chains (JointChainSolver::build); their joints are not pins.
-  void build_chains(bool enabled);
-  // The pin row at `position` of the order, whose impulse its joint takes back once the
-  // substeps are done; nullptr when that joint is not a pin.
-  const PinRow* pin_at(std::uint32_t position) const {
-    return is_pin_[position] != 0 ? &pins_[position] : nullptr;
-  }
+  // Finds the chains (JointChainSolver::build), whose joints are solved from their records,
+  // and gives each revolute row its place; returns how many there are.
+  std::size_t build_chains(bool enabled);
+  // The place in the order of revolute row `slot`.
+  std::uint32_t revolute_row_position(std::size_t slot) const { return revolute_positions_[slot]; }
+  // Copies the prepared frame and state of the joint at `position` (a revolute row's) into its
+  // row. Thread safe across positions.
+  void fill_revolute_row(std::uint32_t position, const Joint& joint);
+  // Gives the joint at `position` what its row's solve changed (its impulses), once the
+  // substeps are done; nothing for a joint solved from its record.
+  void store_row(std::uint32_t position, Joint& joint) const;
   const std::vector<std::uint32_t>& color_begin() const { return *color_begin_; }
   // Joints order[begin, end).
   void warm_start(SolverBody* bodies, std::uint32_t begin, std::uint32_t end);
@@ -51,10 +57,20 @@ class JointStages {
   void solve_chains(SolverBody* bodies, bool use_bias);
 
  private:
+  // What a joint is solved from: its record; a pin row; or a revolute row, a copy of its
+  // frame and state kept in solve order (every revolute joint with angle rows: ragdolls).
+  enum class RowKind : std::uint8_t { record, pin, revolute };
+  struct RevoluteRow {
+    JointFrame frame;
+    RevoluteJoint joint;
+  };
   JointChainSolver chains_;
-  std::vector<PinRow> pins_;          // per position of the order: valid where is_pin_
-  std::vector<JointEnds> ends_;       // per position of the order
-  std::vector<std::uint8_t> is_pin_;  // bytes, not bits: set from several threads
+  std::vector<PinRow> pins_;             // per position of the order: valid where a pin
+  std::vector<JointEnds> ends_;          // per position of the order
+  std::vector<RowKind> kind_;            // per position; bytes, set from several threads
+  std::vector<std::uint32_t> row_slot_;  // per position: its revolute row, where it has one
+  std::vector<RevoluteRow> revolute_rows_;
+  std::vector<std::uint32_t> revolute_positions_;  // per revolute row: its position
   IdPool<Joint>* joints_ = nullptr;
   const std::vector<std::uint32_t>* order_ = nullptr;
   const std::vector<std::uint32_t>* color_begin_ = nullptr;
