@@ -9,7 +9,8 @@ namespace mink::detail {
 namespace {
 
 // Bias and softness of a rigid row with position error `error`.
-Softness rigid_row(const JointFrame& frame, Real error, bool use_bias, Real& bias) {
+template <typename Frame>
+Softness rigid_row(const Frame& frame, Real error, bool use_bias, Real& bias) {
   if (!use_bias) {
     bias = 0;
     return {0, 1, 0};
@@ -19,7 +20,8 @@ Softness rigid_row(const JointFrame& frame, Real error, bool use_bias, Real& bia
 }
 
 // A one-sided row (a limit): speculative while apart (error > 0), rigid once reached.
-Softness limit_row(const JointFrame& frame, Real error, bool use_bias, Real& bias) {
+template <typename Frame>
+Softness limit_row(const Frame& frame, Real error, bool use_bias, Real& bias) {
   if (error > 0) {
     bias = error * frame.inv_h;
     return {0, 1, 0};
@@ -27,7 +29,8 @@ Softness limit_row(const JointFrame& frame, Real error, bool use_bias, Real& bia
   return rigid_row(frame, error, use_bias, bias);
 }
 
-void apply_angular(SolverBody& a, SolverBody& b, const JointFrame& frame, Real impulse) {
+template <typename Frame>
+void apply_angular(SolverBody& a, SolverBody& b, const Frame& frame, Real impulse) {
   a.w -= frame.bodies[0].inv_inertia * impulse;
   b.w += frame.bodies[1].inv_inertia * impulse;
 }
@@ -105,6 +108,10 @@ template void warm_start_point(SolverBody*, const JointFrame&, const Vec2&, Real
 template void warm_start_point(SolverBody*, const PinRow&, const Vec2&, Real);
 template void solve_point(SolverBody&, SolverBody&, const JointFrame&, bool, Vec2&);
 template void solve_point(SolverBody&, SolverBody&, const PinRow&, bool, Vec2&);
+template CurrentAnchors current_anchors(const RevoluteRowFrame&, const SolverBody&,
+                                        const SolverBody&);
+template void warm_start_point(SolverBody*, const RevoluteRowFrame&, const Vec2&, Real);
+template void solve_point(SolverBody&, SolverBody&, const RevoluteRowFrame&, bool, Vec2&);
 
 void solve_point_spring(SolverBody& a, SolverBody& b, const JointFrame& frame,
                         const Softness& spring, Vec2& impulse) {
@@ -137,7 +144,8 @@ void solve_angle(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axi
   apply_angular(a, b, frame, p);
 }
 
-void solve_angular_spring(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
+template <typename Frame>
+void solve_angular_spring(SolverBody& a, SolverBody& b, const Frame& frame, Real axial_mass,
                           const Softness& spring, Real error, Real& impulse) {
   const Real cdot = b.w - a.w;
   const Real bias = spring.bias_rate * error;
@@ -146,7 +154,8 @@ void solve_angular_spring(SolverBody& a, SolverBody& b, const JointFrame& frame,
   apply_angular(a, b, frame, p);
 }
 
-void solve_angular_motor(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
+template <typename Frame>
+void solve_angular_motor(SolverBody& a, SolverBody& b, const Frame& frame, Real axial_mass,
                          const JointMotor& motor, Real& impulse) {
   const Real cdot = b.w - a.w - motor.speed;
   const Real max_impulse = frame.h * motor.max_force;
@@ -155,7 +164,8 @@ void solve_angular_motor(SolverBody& a, SolverBody& b, const JointFrame& frame, 
   apply_angular(a, b, frame, impulse - old);
 }
 
-void solve_angular_limits(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
+template <typename Frame>
+void solve_angular_limits(SolverBody& a, SolverBody& b, const Frame& frame, Real axial_mass,
                           Real angle, const JointLimit& limit, bool use_bias, Real& lower_impulse,
                           Real& upper_impulse) {
   {
@@ -177,6 +187,19 @@ void solve_angular_limits(SolverBody& a, SolverBody& b, const JointFrame& frame,
     upper_impulse = total;
   }
 }
+
+template void solve_angular_spring(SolverBody&, SolverBody&, const JointFrame&, Real,
+                                   const Softness&, Real, Real&);
+template void solve_angular_spring(SolverBody&, SolverBody&, const RevoluteRowFrame&, Real,
+                                   const Softness&, Real, Real&);
+template void solve_angular_motor(SolverBody&, SolverBody&, const JointFrame&, Real,
+                                  const JointMotor&, Real&);
+template void solve_angular_motor(SolverBody&, SolverBody&, const RevoluteRowFrame&, Real,
+                                  const JointMotor&, Real&);
+template void solve_angular_limits(SolverBody&, SolverBody&, const JointFrame&, Real, Real,
+                                   const JointLimit&, bool, Real&, Real&);
+template void solve_angular_limits(SolverBody&, SolverBody&, const RevoluteRowFrame&, Real, Real,
+                                   const JointLimit&, bool, Real&, Real&);
 
 AxialRow make_axial_row(const JointFrame& frame, const CurrentAnchors& anchors, const Vec2& axis) {
   AxialRow row;

@@ -38,11 +38,21 @@ struct PinRow {
   Vec2 impulse{0, 0};
 };
 
+// What a revolute joint's rows read of its frame, named as a JointFrame's fields (its row in
+// solve order holds this, not the whole frame).
+struct RevoluteRowFrame {
+  std::array<JointBody, 2> bodies{};
+  Vec2 anchor_a{0, 0}, anchor_b{0, 0}, delta_center{0, 0};
+  Real h = 0, inv_h = 0;
+  Softness soft;
+  Real coordinate_a = 0;
+};
+
 // The anchors now: their offsets from the centres of mass, and B's anchor minus A's.
 struct CurrentAnchors {
   Vec2 ra{0, 0}, rb{0, 0}, separation{0, 0};
 };
-// `Frame`, here and below: a JointFrame or a PinRow.
+// `Frame`, here and below: a JointFrame, or a PinRow or RevoluteRowFrame where they apply.
 template <typename Frame>
 CurrentAnchors current_anchors(const Frame& frame, const SolverBody& a, const SolverBody& b);
 
@@ -67,11 +77,14 @@ void solve_point_motor(SolverBody& a, SolverBody& b, const JointFrame& frame, co
 // Rows on the relative angle (B minus A); `axial_mass` is 1 / (iA + iB).
 void solve_angle(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass, Real error,
                  bool use_bias, Real& impulse);
-void solve_angular_spring(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
+template <typename Frame>
+void solve_angular_spring(SolverBody& a, SolverBody& b, const Frame& frame, Real axial_mass,
                           const Softness& spring, Real error, Real& impulse);
-void solve_angular_motor(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
+template <typename Frame>
+void solve_angular_motor(SolverBody& a, SolverBody& b, const Frame& frame, Real axial_mass,
                          const JointMotor& motor, Real& impulse);
-void solve_angular_limits(SolverBody& a, SolverBody& b, const JointFrame& frame, Real axial_mass,
+template <typename Frame>
+void solve_angular_limits(SolverBody& a, SolverBody& b, const Frame& frame, Real axial_mass,
                           Real angle, const JointLimit& limit, bool use_bias, Real& lower_impulse,
                           Real& upper_impulse);
 

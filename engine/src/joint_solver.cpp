@@ -55,9 +55,7 @@ std::size_t JointStages::build_chains(bool enabled) {
 }
 
 void JointStages::fill_revolute_row(std::uint32_t position, const Joint& joint) {
-  RevoluteRow& row = revolute_rows_[row_slot_[position]];
-  row.frame = joint.frame;
-  row.joint = std::get<RevoluteJoint>(joint.kind);
+  fill_row(revolute_rows_[row_slot_[position]], std::get<RevoluteJoint>(joint.kind), joint.frame);
 }
 
 void JointStages::store_row(std::uint32_t position, Joint& joint) const {
@@ -68,7 +66,7 @@ void JointStages::store_row(std::uint32_t position, Joint& joint) const {
       std::get<RevoluteJoint>(joint.kind).linear_impulse = pins_[position].impulse;
       return;
     case RowKind::revolute:
-      std::get<RevoluteJoint>(joint.kind) = revolute_rows_[row_slot_[position]].joint;
+      detail::store_row(revolute_rows_[row_slot_[position]], std::get<RevoluteJoint>(joint.kind));
       return;
   }
 }
@@ -81,8 +79,7 @@ void JointStages::warm_start(SolverBody* bodies, std::uint32_t begin, std::uint3
       continue;
     }
     if (kind_[i] == RowKind::revolute) {
-      const RevoluteRow& row = revolute_rows_[row_slot_[i]];
-      detail::warm_start(row.joint, row.frame, bodies);
+      detail::warm_start(revolute_rows_[row_slot_[i]], bodies);
       continue;
     }
     Joint& joint = (*joints_)[(*order_)[i]];
@@ -105,8 +102,7 @@ void JointStages::solve(SolverBody* bodies, bool use_bias, std::uint32_t begin, 
       continue;
     }
     if (kind_[i] == RowKind::revolute) {
-      RevoluteRow& row = revolute_rows_[row_slot_[i]];
-      detail::solve(row.joint, row.frame, bodies, use_bias);
+      detail::solve(revolute_rows_[row_slot_[i]], bodies, use_bias);
       continue;
     }
     Joint& joint = (*joints_)[(*order_)[i]];

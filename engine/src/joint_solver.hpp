@@ -57,13 +57,9 @@ class JointStages {
   void solve_chains(SolverBody* bodies, bool use_bias);
 
  private:
-  // What a joint is solved from: its record; a pin row; or a revolute row, a copy of its
-  // frame and state kept in solve order (every revolute joint with angle rows: ragdolls).
+  // What a joint is solved from: its record; a pin row; or a revolute row (every other
+  // revolute joint outside a chain: ragdolls), both kept in solve order.
   enum class RowKind : std::uint8_t { record, pin, revolute };
-  struct RevoluteRow {
-    JointFrame frame;
-    RevoluteJoint joint;
-  };
   JointChainSolver chains_;
   std::vector<PinRow> pins_;             // per position of the order: valid where a pin
   std::vector<JointEnds> ends_;          // per position of the order

@@ -28,21 +28,23 @@ void prepare(RevoluteJoint& joint, JointFrame& frame) {
 namespace {
 
 // What the angle's rows (spring, motor, limits) hold together.
-Real angular_impulse(const RevoluteJoint& joint) {
+template <typename Joint>
+Real angular_impulse(const Joint& joint) {
   return joint.spring_impulse + joint.motor_impulse + joint.lower_impulse - joint.upper_impulse;
 }
 
-}  // namespace
-
-void warm_start(const RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies) {
+// The rows, on a joint's record and frame or on its row's copies of them.
+template <typename Joint, typename Frame>
+void warm_start_rows(const Joint& joint, const Frame& frame, SolverBody* bodies) {
   warm_start_point(bodies, frame, joint.linear_impulse, angular_impulse(joint));
 }
 
-void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias) {
+template <typename Joint, typename Frame>
+void solve_rows(Joint& joint, const Frame& frame, SolverBody* bodies, bool use_bias) {
   SolverBody& a = bodies[frame.bodies[0].solver];
   SolverBody& b = bodies[frame.bodies[1].solver];
   if (joint.angle_rows) {
-    const RevoluteJointDef& def = joint.def;
+    const auto& def = joint.def;
     // The angle only where a row needs it (two arc tangents a substep, for every joint of a
     // large net otherwise), once: the rows change velocities, not the angle.
     const bool needs_angle = def.spring.enabled || def.limit.enabled;
@@ -61,6 +63,56 @@ void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bo
     }
   }
   if (!joint.direct) solve_point(a, b, frame, use_bias, joint.linear_impulse);
+}
+
+}  // namespace
+
+void warm_start(const RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies) {
+  warm_start_rows(joint, frame, bodies);
+}
+
+void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias) {
+  solve_rows(joint, frame, bodies, use_bias);
+}
+
+void fill_row(RevoluteRow& row, const RevoluteJoint& joint, const JointFrame& frame) {
+  row.frame = {{frame.bodies[0], frame.bodies[1]},
+               frame.anchor_a,
+               frame.anchor_b,
+               frame.delta_center,
+               frame.h,
+               frame.inv_h,
+               frame.soft,
+               frame.coordinate_a};
+  RevoluteRow::State& s = row.joint;
+  s.linear_impulse = joint.linear_impulse;
+  s.spring_impulse = joint.spring_impulse;
+  s.motor_impulse = joint.motor_impulse;
+  s.lower_impulse = joint.lower_impulse;
+  s.upper_impulse = joint.upper_impulse;
+  s.direct = joint.direct;
+  s.angle_rows = joint.angle_rows;
+  s.axial_mass = joint.axial_mass;
+  s.spring_soft = joint.spring_soft;
+  s.def.spring = joint.def.spring;
+  s.def.motor = joint.def.motor;
+  s.def.limit = joint.def.limit;
+}
+
+void store_row(const RevoluteRow& row, RevoluteJoint& joint) {
+  joint.linear_impulse = row.joint.linear_impulse;
+  joint.spring_impulse = row.joint.spring_impulse;
+  joint.motor_impulse = row.joint.motor_impulse;
+  joint.lower_impulse = row.joint.lower_impulse;
+  joint.upper_impulse = row.joint.upper_impulse;
+}
+
+void warm_start(const RevoluteRow& row, SolverBody* bodies) {
+  warm_start_rows(row.joint, row.frame, bodies);
+}
+
+void solve(RevoluteRow& row, SolverBody* bodies, bool use_bias) {
+  solve_rows(row.joint, row.frame, bodies, use_bias);
 }
 
 JointReaction reaction(const RevoluteJoint& joint, const JointFrame& frame) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "joint_common.hpp"
+#include "joint_rows.hpp"
 
 namespace mink::detail {
 
@@ -22,6 +23,30 @@ struct RevoluteJoint {
   Softness spring_soft;
   RevoluteJointDef def;
 };
+
+// A revolute joint as its rows read it every substep, kept in solve order (joint_solver.cpp):
+// its frame's fields and its state, named as a JointFrame's and a RevoluteJoint's, with only
+// the parts of its definition the rows read. A third of the record's size.
+struct RevoluteRow {
+  RevoluteRowFrame frame;
+  struct State {
+    Vec2 linear_impulse{0, 0};
+    Real spring_impulse = 0, motor_impulse = 0, lower_impulse = 0, upper_impulse = 0;
+    bool direct = false, angle_rows = false;
+    Real axial_mass = 0;
+    Softness spring_soft;
+    struct {
+      JointSpring spring;
+      JointMotor motor;
+      JointLimit limit;
+    } def;
+  } joint;
+};
+// Copies a prepared joint into its row, and the row's impulses back.
+void fill_row(RevoluteRow& row, const RevoluteJoint& joint, const JointFrame& frame);
+void store_row(const RevoluteRow& row, RevoluteJoint& joint);
+void warm_start(const RevoluteRow& row, SolverBody* bodies);
+void solve(RevoluteRow& row, SolverBody* bodies, bool use_bias);
 
 // The functions every joint kind implements (see joint_solver.cpp for when each runs);
 // finish, coordinate and speed only where the kind has something to say (joint.hpp).
