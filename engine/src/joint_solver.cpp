@@ -1,7 +1,8 @@
 // The joints' part of a step. After the contacts are prepared: the joints of moving bodies,
 // in colour order then slot order, get their frames for the step. In every substep stage the
-// solver runs them before the contacts (warm start, solve with bias, relax); after the solve
-// each joint records the force it applied, reports a break, and settles its coordinate.
+// solver runs them before the contacts (warm start, solve with bias, relax), revolute joints
+// from their rows; after the solve each joint takes back its row's impulses, records the force
+// it applied, reports a break, and settles its coordinate.
 
 #include <algorithm>
 #include <bit>

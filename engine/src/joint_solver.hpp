@@ -14,7 +14,8 @@ namespace mink::detail {
 // The joints' part of each substep stage, run by the contact solver's substep loop before its
 // contacts, in the order prepare_joints chose: colour by colour (the overflow last), the
 // chains' point rows first in each solve. A colour's joints share no moving body, so the
-// solver may run any range of a colour on any worker.
+// solver may run any range of a colour on any worker. Revolute joints outside the chains are
+// solved from compact rows laid out in that order, not from their kilobyte records.
 class JointStages {
  public:
   // `order`: the joints, by colour; `color_begin`: where each colour starts in it (one past the

@@ -79,10 +79,12 @@ TEST(Determinism, KinematicSharedAcrossLanesMatchesScalarTwin) {
   EXPECT_EQ(test::state_hash(wide), test::state_hash(scalar));
 }
 
-// A revolute joint that is only its point row is solved from a compact pin row; the same joint
-// with a limit too wide ever to be reached is solved from its record, whose limit rows never
-// push: the bodies move alike, bit for bit, at one worker and at two (Box2D v3's joint grid).
-TEST(Determinism, PinRowsMatchTheJointRecordsPath) {
+// A revolute joint that is only its point row is solved from a pin row (136 bytes, its own
+// copy and store code); the same joint with a limit too wide ever to be reached goes through
+// a revolute row instead, whose limit rows never push: the bodies move alike, bit for bit, at
+// one worker and at two (Box2D v3's joint grid). Either row's copy of a joint going wrong, or
+// its impulses not coming back, parts them.
+TEST(Determinism, PinRowsMatchRevoluteRows) {
 #ifdef MINK_SANITIZED_BUILD
   constexpr int kSteps = 8;
 #else
@@ -95,19 +97,19 @@ TEST(Determinism, PinRowsMatchTheJointRecordsPath) {
     for (SceneJoint& joint : scene.joints) {
       std::get<RevoluteJointDef>(joint.def).limit = {true, -1e6, 1e6};
     }
-    World records = build_world(scene);
+    World rows = build_world(scene);
     for (int i = 0; i < kSteps; ++i) {
       pins.step();
-      records.step();
+      rows.step();
     }
-    const std::vector<BodyId> a = pins.bodies(), b = records.bodies();
+    const std::vector<BodyId> a = pins.bodies(), b = rows.bodies();
     ASSERT_EQ(a.size(), b.size());
     std::size_t moved = 0;
     for (std::size_t i = 0; i < a.size(); ++i) {
-      ASSERT_EQ(pins.position(a[i]), records.position(b[i])) << "body " << i;
-      ASSERT_EQ(pins.angle(a[i]), records.angle(b[i])) << "body " << i;
-      ASSERT_EQ(pins.linear_velocity(a[i]), records.linear_velocity(b[i])) << "body " << i;
-      ASSERT_EQ(pins.angular_velocity(a[i]), records.angular_velocity(b[i])) << "body " << i;
+      ASSERT_EQ(pins.position(a[i]), rows.position(b[i])) << "body " << i;
+      ASSERT_EQ(pins.angle(a[i]), rows.angle(b[i])) << "body " << i;
+      ASSERT_EQ(pins.linear_velocity(a[i]), rows.linear_velocity(b[i])) << "body " << i;
+      ASSERT_EQ(pins.angular_velocity(a[i]), rows.angular_velocity(b[i])) << "body " << i;
       moved += pins.linear_velocity(a[i]).norm() > 0.1 ? 1 : 0;
     }
     EXPECT_GT(moved, a.size() / 2) << "the net is meant to be falling and swinging";
