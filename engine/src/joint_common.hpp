@@ -104,7 +104,7 @@ inline Real delta_angle(const SolverBody& b) {
 }
 
 // Applies impulse `p` at offset `r` (and angular impulse `l`) to B and the opposite to A.
-// `Frame`: a JointFrame, or a PinRow (joint_rows.hpp), which holds the same fields.
+// `Frame`: a JointFrame, or a row's frame (joint_rows.hpp), which holds the same fields.
 template <typename Frame>
 inline void apply_pair(SolverBody& a, SolverBody& b, const Frame& f, const Vec2& ra, const Vec2& rb,
                        const Vec2& p, Real l) {

@@ -45,6 +45,14 @@ void set_anchors(JointFrame& frame, const Vec2& local_anchor_a, const Vec2& loca
   frame.delta_center = b.center - a.center;
 }
 
+PointRowFrame point_row_frame(const JointFrame& frame) {
+  return {{frame.bodies[0], frame.bodies[1]},
+          frame.anchor_a,
+          frame.anchor_b,
+          frame.delta_center,
+          frame.soft};
+}
+
 template <typename Frame>
 void warm_start_point(SolverBody* bodies, const Frame& frame, const Vec2& linear, Real angular) {
   SolverBody& a = bodies[frame.bodies[0].solver];

@@ -26,25 +26,26 @@ void drop_switched_off(Kind& joint) {
 // Sets the frame's anchors (from each centre of mass, world-rotated) from body-local anchors.
 void set_anchors(JointFrame& frame, const Vec2& local_anchor_a, const Vec2& local_anchor_b);
 
-// A revolute joint that is only its point row (no spring, motor or limit, not solved in a
-// direct chain) as the solver reads it every substep, with its impulse: 136 bytes, kept in
-// solve order, where the joint's record is a kilobyte a large net would drag through the
-// cache three times a substep. Its fields are named as a JointFrame's, so the point row's
-// functions below take either and compute the same bits.
-struct PinRow {
+// What a point row reads of a joint's frame, named as a JointFrame's fields, so the point
+// row's functions below take either and compute the same bits; the rows the solver keeps in
+// solve order (a joint's record is a kilobyte a large net would drag through the cache three
+// times a substep) hold it.
+struct PointRowFrame {
   std::array<JointBody, 2> bodies{};
   Vec2 anchor_a{0, 0}, anchor_b{0, 0}, delta_center{0, 0};
   Softness soft;
+};
+PointRowFrame point_row_frame(const JointFrame& frame);
+
+// A revolute joint that is only its point row (no spring, motor or limit, not solved in a
+// direct chain), with its impulse: 136 bytes.
+struct PinRow : PointRowFrame {
   Vec2 impulse{0, 0};
 };
 
-// What a revolute joint's rows read of its frame, named as a JointFrame's fields (its row in
-// solve order holds this, not the whole frame).
-struct RevoluteRowFrame {
-  std::array<JointBody, 2> bodies{};
-  Vec2 anchor_a{0, 0}, anchor_b{0, 0}, delta_center{0, 0};
+// What a revolute joint's rows read of its frame.
+struct RevoluteRowFrame : PointRowFrame {
   Real h = 0, inv_h = 0;
-  Softness soft;
   Real coordinate_a = 0;
 };
 
@@ -52,7 +53,8 @@ struct RevoluteRowFrame {
 struct CurrentAnchors {
   Vec2 ra{0, 0}, rb{0, 0}, separation{0, 0};
 };
-// `Frame`, here and below: a JointFrame, or a PinRow or RevoluteRowFrame where they apply.
+// `Frame`, here and below: a JointFrame, or a row's frame (PinRow, RevoluteRowFrame) where
+// it holds what the function reads.
 template <typename Frame>
 CurrentAnchors current_anchors(const Frame& frame, const SolverBody& a, const SolverBody& b);
 

@@ -31,11 +31,7 @@ void JointStages::gather(std::uint32_t position, Joint& joint) {
     return;
   }
   PinRow& row = pins_[position];
-  row.bodies = {frame.bodies[0], frame.bodies[1]};
-  row.anchor_a = frame.anchor_a;
-  row.anchor_b = frame.anchor_b;
-  row.delta_center = frame.delta_center;
-  row.soft = frame.soft;
+  static_cast<PointRowFrame&>(row) = point_row_frame(frame);
   row.impulse = revolute->linear_impulse;
   kind_[position] = RowKind::pin;
 }

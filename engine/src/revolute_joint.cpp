@@ -76,35 +76,18 @@ void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bo
 }
 
 void fill_row(RevoluteRow& row, const RevoluteJoint& joint, const JointFrame& frame) {
-  row.frame = {{frame.bodies[0], frame.bodies[1]},
-               frame.anchor_a,
-               frame.anchor_b,
-               frame.delta_center,
-               frame.h,
-               frame.inv_h,
-               frame.soft,
-               frame.coordinate_a};
-  RevoluteRow::State& s = row.joint;
-  s.linear_impulse = joint.linear_impulse;
-  s.spring_impulse = joint.spring_impulse;
-  s.motor_impulse = joint.motor_impulse;
-  s.lower_impulse = joint.lower_impulse;
-  s.upper_impulse = joint.upper_impulse;
-  s.direct = joint.direct;
-  s.angle_rows = joint.angle_rows;
-  s.axial_mass = joint.axial_mass;
-  s.spring_soft = joint.spring_soft;
-  s.def.spring = joint.def.spring;
-  s.def.motor = joint.def.motor;
-  s.def.limit = joint.def.limit;
+  static_cast<PointRowFrame&>(row.frame) = point_row_frame(frame);
+  row.frame.h = frame.h;
+  row.frame.inv_h = frame.inv_h;
+  row.frame.coordinate_a = frame.coordinate_a;
+  static_cast<RevoluteRowState&>(row.joint) = joint;
+  row.joint.def.spring = joint.def.spring;
+  row.joint.def.motor = joint.def.motor;
+  row.joint.def.limit = joint.def.limit;
 }
 
 void store_row(const RevoluteRow& row, RevoluteJoint& joint) {
-  joint.linear_impulse = row.joint.linear_impulse;
-  joint.spring_impulse = row.joint.spring_impulse;
-  joint.motor_impulse = row.joint.motor_impulse;
-  joint.lower_impulse = row.joint.lower_impulse;
-  joint.upper_impulse = row.joint.upper_impulse;
+  static_cast<RevoluteRowState&>(joint) = row.joint;
 }
 
 void warm_start(const RevoluteRow& row, SolverBody* bodies) {

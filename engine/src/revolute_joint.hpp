@@ -5,15 +5,11 @@
 
 namespace mink::detail {
 
-// A revolute joint: a point constraint, plus on the relative angle a spring, a motor and
-// limits, each its own row solved in that order (the point last, as it matters most).
-struct RevoluteJoint {
-  // The solver's state first and the definition after it: a plain pin's solve then reads the
-  // record's first line only.
-  // Accumulated impulses, kept between steps for warm starting.
+// What a revolute joint's rows keep between substeps and read of its preparing: its impulses,
+// accumulated and kept between steps for warm starting, and its prepared masses and flags.
+struct RevoluteRowState {
   Vec2 linear_impulse{0, 0};
   Real spring_impulse = 0, motor_impulse = 0, lower_impulse = 0, upper_impulse = 0;
-  Real angle = 0;       // the joint angle at the end of the last step, counted through full turns
   bool direct = false;  // its point row is solved with its chain's (joint_chain_solver.hpp)
   // Prepared for the step. Whether an angle row (spring, motor, limit) is on and the pair can
   // turn: beside `direct`, so a plain pin's solve reads one line of the record, not the
@@ -21,6 +17,14 @@ struct RevoluteJoint {
   bool angle_rows = false;
   Real axial_mass = 0;
   Softness spring_soft;
+};
+
+// A revolute joint: a point constraint, plus on the relative angle a spring, a motor and
+// limits, each its own row solved in that order (the point last, as it matters most). The
+// solver's state first and the definition after it: a plain pin's solve then reads the
+// record's first line only.
+struct RevoluteJoint : RevoluteRowState {
+  Real angle = 0;  // the joint angle at the end of the last step, counted through full turns
   RevoluteJointDef def;
 };
 
@@ -29,12 +33,7 @@ struct RevoluteJoint {
 // the parts of its definition the rows read. A third of the record's size.
 struct RevoluteRow {
   RevoluteRowFrame frame;
-  struct State {
-    Vec2 linear_impulse{0, 0};
-    Real spring_impulse = 0, motor_impulse = 0, lower_impulse = 0, upper_impulse = 0;
-    bool direct = false, angle_rows = false;
-    Real axial_mass = 0;
-    Softness spring_soft;
+  struct State : RevoluteRowState {
     struct {
       JointSpring spring;
       JointMotor motor;
