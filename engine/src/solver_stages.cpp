@@ -122,29 +122,18 @@ void WorldState::prepare_contacts() {
   const auto fixed = [&](std::int32_t index) {
     return index < 0 || solver_info[static_cast<std::size_t>(index)].inv_mass == 0;
   };
-  // Each contact's record is read in parallel (a = -1: no constraint), the few bytes each
-  // gives gathered after in contact order.
-  step_constraint_bodies.resize(step_contacts.size());
-  tasks.parallel_for(
-      static_cast<std::uint32_t>(step_contacts.size()), 256,
-      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-        for (std::uint32_t k = begin; k < end; ++k) {
-          if (k + kPrefetchAhead < end)
-            prefetch_contact(contacts[step_contacts[k + kPrefetchAhead]]);
-          const Contact& c = contacts[step_contacts[k]];
-          detail::ConstraintBodies& cb = step_constraint_bodies[k];
-          const std::int32_t ia = body_solver_index[c.body_a], ib = body_solver_index[c.body_b];
-          if (c.manifold.point_count == 0 || (ia < 0 && ib < 0)) {
-            cb.a = -1;
-            continue;
-          }
-          cb = {ia < 0 ? still : ia, ib < 0 ? still : ib, fixed(ia), fixed(ib), c.color};
-        }
-      });
   for (std::size_t k = 0; k < step_contacts.size(); ++k) {
-    if (step_constraint_bodies[k].a < 0) continue;
-    constraint_contacts.push_back(step_contacts[k]);
-    constraint_bodies.push_back(step_constraint_bodies[k]);
+    if (k + kPrefetchAhead < step_contacts.size()) {
+      prefetch_contact(contacts[step_contacts[k + kPrefetchAhead]]);
+    }
+    const std::uint32_t ci = step_contacts[k];
+    const Contact& c = contacts[ci];
+    if (c.manifold.point_count == 0) continue;
+    const std::int32_t ia = body_solver_index[c.body_a], ib = body_solver_index[c.body_b];
+    if (ia < 0 && ib < 0) continue;
+    constraint_contacts.push_back(ci);
+    constraint_bodies.push_back(
+        {ia < 0 ? still : ia, ib < 0 ? still : ib, fixed(ia), fixed(ib), c.color});
   }
   // Constraints in order of their first moving body (a stable counting sort): neighbouring
   // constraints then touch neighbouring bodies and the solver's gathers stay in cache.
