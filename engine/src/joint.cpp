@@ -224,6 +224,7 @@ JointId World::create_joint(const JointDef& def) {
     w.joints[slot.gear_joints[1]].gears.push_back(index);
   }
   for (int k = 0; k < slot.body_count; ++k) add_unique(w.bodies[slot.body[k]].joints, index);
+  w.set_joint_bodies(index);
   // Settled state: a revolute's angle counts from where the bodies are now.
   const detail::JointBodyState sa = w.joint_body_state(slot.body[0]);
   const detail::JointBodyState sb = w.joint_body_state(slot.body[1]);
@@ -260,6 +261,17 @@ void WorldState::destroy_joint(std::uint32_t index) {
     for (const std::uint32_t s : bodies[joint.body[0]].shapes) refresh_proxy(s);
   }
   joints.release(index);
+  set_joint_bodies(index);
+}
+
+void WorldState::set_joint_bodies(std::uint32_t index) {
+  if (joint_bodies.size() < joints.size()) joint_bodies.resize(joints.size());
+  const Joint& joint = joints.slots()[index];
+  detail::JointBodies& ends = joint_bodies[index];
+  ends = {};
+  if (!joint.alive) return;
+  ends.body = joint.body;
+  ends.count = static_cast<std::uint32_t>(joint.body_count);
 }
 
 void WorldState::recolor_joint(std::uint32_t index) {

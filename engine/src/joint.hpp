@@ -27,6 +27,13 @@ struct Joint {
   JointReaction reaction;  // of the last step it was solved in
 };
 
+// A joint's bodies as the island pass reads them: a compact copy of Joint::body and
+// body_count per joint slot (count 0 while the slot is free).
+struct JointBodies {
+  std::array<std::uint32_t, 4> body{};
+  std::uint32_t count = 0;
+};
+
 // A kind's end-of-step bookkeeping, free coordinate and its rate: kinds without one (a weld,
 // a motor joint) leave the function out and read 0.
 template <typename Kind>

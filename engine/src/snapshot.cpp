@@ -19,7 +19,7 @@ namespace mink {
 namespace {
 
 constexpr std::array<char, 8> kMagic{'M', 'I', 'N', 'K', 'S', 'N', 'A', 'P'};
-constexpr std::uint32_t kFormatVersion = 2;
+constexpr std::uint32_t kFormatVersion = 3;
 // Magic, format version, build fingerprint, payload size, payload checksum.
 constexpr std::size_t kHeaderSize = 8 + 4 + 8 + 8 + 8;
 
@@ -96,7 +96,6 @@ void state_fields(Archive& a, WorldState& w) {
   a(w.newly_acting);
   a(w.awake_list);
   a(w.island_stamp);
-  a(w.island_parent);
 }
 
 std::vector<std::uint8_t> payload_of(const WorldState& w) {
@@ -164,6 +163,7 @@ std::unique_ptr<WorldState> parse(std::span<const std::uint8_t> bytes, const Wor
   } catch (const Error& e) {
     throw SnapshotError(std::string("snapshot with bad world settings: ") + e.what());
   }
+  for (std::uint32_t i = 0; i < state->joints.size(); ++i) state->set_joint_bodies(i);
   state->contact_index.reserve(state->contacts.size());
   for (std::uint32_t i = 0; i < state->contacts.size(); ++i) {
     const detail::Contact& c = state->contacts[i];

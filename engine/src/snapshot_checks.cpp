@@ -77,14 +77,26 @@ void check_indices(const WorldState& w, ByteReader& in) {
     }
   }
   for (std::size_t c = 0; c < contacts; ++c) {
-    if (w.contacts[c].body_a == w.contacts[c].body_b || listed[c] != 2) {
+    const Contact& contact = w.contacts[c];
+    if (contact.body_a == contact.body_b || listed[c] != 2) {
       in.fail("contact " + std::to_string(c) + " is not listed once by each of its two bodies");
+    }
+    // The island pass links two bodies by these flags alone, without reading the bodies: a
+    // contact is between enabled bodies (disabling one destroys its contacts), and it flags
+    // exactly those that are not dynamic.
+    const Body& a = w.bodies[contact.body_a];
+    const Body& b = w.bodies[contact.body_b];
+    if (!a.enabled || !b.enabled) {
+      in.fail("contact " + std::to_string(c) + " touches a disabled body");
+    }
+    if (contact.a_fixed != (a.type != BodyType::dynamic) ||
+        contact.b_fixed != (b.type != BodyType::dynamic)) {
+      in.fail("contact " + std::to_string(c) + " flags its bodies' types wrongly");
     }
   }
   for (const SensorState& s : w.sensors) below(s.shape, shapes, "a sensor shape");
   for (const std::uint32_t i : w.awake_list) below(i, bodies, "an awake body");
   for (const std::uint32_t i : w.newly_acting) below(i, contacts, "a contact waiting for a colour");
-  for (const std::uint32_t i : w.island_parent) below(i, bodies, "an island parent");
 }
 
 // Walks a record's fields as the snapshot does and notes whether every floating-point one is

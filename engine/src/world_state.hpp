@@ -120,9 +120,11 @@ struct WorldState {
   std::vector<std::uint8_t> joint_broke;       // per joint_order entry, while finishing
   std::vector<std::uint32_t> joint_own_slots;  // per step joint: its first own solver record
   detail::JointStages joint_stages;
-  std::vector<std::uint64_t> island_stamp;  // per body: the step whose island pass reached it
+  std::vector<detail::JointBodies> joint_bodies;  // per joint slot; see set_joint_bodies
+  std::vector<std::uint64_t> island_stamp;        // per body: the step whose island pass reached it
   std::vector<std::uint32_t> island_stack, island_members, woken;
-  std::vector<std::uint32_t> island_parent;  // union-find over bodies (wake_reached_islands)
+  std::vector<std::uint32_t> island_parent;  // union-find over bodies, while finding islands
+  std::vector<Real> island_sleep;            // per island root: its members' shortest rest
   std::vector<ProxyId> query_scratch;
   detail::ContinuousState continuous;
 
@@ -175,10 +177,11 @@ struct WorldState {
   void destroy_sensor(std::uint32_t shape_index);
   // island.cpp
   void update_islands();
-  void wake_reached_islands();
   void join_woken_contacts();
   // joint.cpp
   void destroy_joint(std::uint32_t index);
+  // Copies the joint's bodies to joint_bodies (none while the slot is free).
+  void set_joint_bodies(std::uint32_t index);
   // Gives the joint back its colour and takes one again with its bodies' current types.
   void recolor_joint(std::uint32_t index);
   // True when a joint between the two bodies keeps their shapes from colliding.
