@@ -244,13 +244,18 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
   stages_.push_back({StageKind::integrate_velocities, 0, 0, body_count, split(body_count, 64)});
   joint_stages(StageKind::joint_warm_start);
   colour_stages(StageKind::warm_start);
+  // The chains' paths are independent of each other, so they are split over the workers.
+  const std::uint32_t paths = with_joints ? joints->chain_paths() : 0;
+  const auto chain_stage = [&](StageKind kind) {
+    if (paths > 0) stages_.push_back({kind, 0, 0, paths, split(paths, 4)});
+  };
   for (int i = 0; with_joints && i < settings.joint_iterations; ++i) {
-    stages_.push_back({StageKind::joint_chains_solve, 0, 0, 1, 1});
+    chain_stage(StageKind::joint_chains_solve);
     joint_stages(StageKind::joint_solve);
   }
   colour_stages(StageKind::solve);
   stages_.push_back({StageKind::integrate_positions, 0, 0, body_count, split(body_count, 64)});
-  if (with_joints) stages_.push_back({StageKind::joint_chains_relax, 0, 0, 1, 1});
+  chain_stage(StageKind::joint_chains_relax);
   joint_stages(StageKind::joint_relax);
   colour_stages(StageKind::relax);
   const std::size_t per_substep = stages_.size();
@@ -294,7 +299,7 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
         return;
       case StageKind::joint_chains_solve:
       case StageKind::joint_chains_relax:
-        x.joints->solve_chains(body_data, st.kind == StageKind::joint_chains_solve);
+        x.joints->solve_chains(body_data, st.kind == StageKind::joint_chains_solve, begin, end);
         return;
       case StageKind::joint_solve:
       case StageKind::joint_relax:

@@ -150,8 +150,9 @@ namespace {
 constexpr Real kRedundantPivot = 1e-12;
 }  // namespace
 
-void JointChainSolver::solve(IdPool<Joint>& joints, SolverBody* bodies, bool use_bias) {
-  for (std::size_t p = 0; p + 1 < path_begin_.size(); ++p) {
+void JointChainSolver::solve(IdPool<Joint>& joints, SolverBody* bodies, bool use_bias,
+                             std::uint32_t first, std::uint32_t last) {
+  for (std::uint32_t p = first; p < last; ++p) {
     const std::uint32_t begin = path_begin_[p], end = path_begin_[p + 1];
     // Rows from the velocities before this pass (the system is solved as a whole).
     for (std::uint32_t i = begin; i < end; ++i) {

@@ -33,7 +33,14 @@ class JointChainSolver {
   // point row). A revolute joint's `direct` must be false until then.
   void build(IdPool<Joint>& joints, const std::vector<std::uint32_t>& order,
              std::span<const JointEnds> ends, bool enabled);
-  void solve(IdPool<Joint>& joints, SolverBody* bodies, bool use_bias);
+  // Solves paths [first, last). Paths share no moving body (a body is in at most two of the
+  // chained joints, both of one path) and each joint has its own copies of fixed bodies, so
+  // any split of the paths over workers gives the same bits.
+  void solve(IdPool<Joint>& joints, SolverBody* bodies, bool use_bias, std::uint32_t first,
+             std::uint32_t last);
+  std::uint32_t path_count() const {
+    return path_begin_.empty() ? 0 : static_cast<std::uint32_t>(path_begin_.size() - 1);
+  }
   std::size_t chained_joints() const { return chain_joints_.size(); }
   // Where the chained joints are in `order`.
   const std::vector<std::uint32_t>& chain_positions() const { return chain_positions_; }

@@ -86,8 +86,9 @@ void JointStages::warm_start(SolverBody* bodies, std::uint32_t begin, std::uint3
 
 // The chains' point rows come first in a solve: the one-at-a-time rows after them (motors,
 // limits, gears) then end each pass satisfied, as they would alone.
-void JointStages::solve_chains(SolverBody* bodies, bool use_bias) {
-  chains_.solve(*joints_, bodies, use_bias);
+void JointStages::solve_chains(SolverBody* bodies, bool use_bias, std::uint32_t first,
+                               std::uint32_t last) {
+  chains_.solve(*joints_, bodies, use_bias, first, last);
 }
 
 void JointStages::solve(SolverBody* bodies, bool use_bias, std::uint32_t begin, std::uint32_t end) {

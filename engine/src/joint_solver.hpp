@@ -55,7 +55,9 @@ class JointStages {
   // Joints order[begin, end).
   void warm_start(SolverBody* bodies, std::uint32_t begin, std::uint32_t end);
   void solve(SolverBody* bodies, bool use_bias, std::uint32_t begin, std::uint32_t end);
-  void solve_chains(SolverBody* bodies, bool use_bias);
+  // The chains' paths [first, last) (chain_paths() in all).
+  void solve_chains(SolverBody* bodies, bool use_bias, std::uint32_t first, std::uint32_t last);
+  std::uint32_t chain_paths() const { return chains_.path_count(); }
 
  private:
   // What a joint is solved from: its record; a pin row; or a revolute row (every other
