@@ -294,23 +294,25 @@ void WorldState::solve() {
                        joint_stages.empty() ? nullptr : &joint_stages, tasks);
 
   // Impulses back to the contacts and poses back to the bodies, each its own record, in
-  // parallel; hit events after, in constraint order.
+  // parallel, which also marks the hits (the shapes met fast and the contact pushed: a
+  // speculative point that never closed does not count); their events after, in constraint
+  // order, from the marks rather than from every contact again.
+  hit_marks.assign(constraint_contacts.size(), 0);
   tasks.parallel_for(static_cast<std::uint32_t>(constraint_contacts.size()), 256,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
                        for (std::uint32_t r = begin; r < end; ++r) {
                          Contact& c = contacts[constraint_contacts[r]];
                          contact_solver.impulses(r, c.normal_impulse, c.tangent_impulse);
+                         hit_marks[r] = c.hit_events &&
+                                        c.approach_speed > def.hit_event_threshold &&
+                                        std::max(c.normal_impulse[0], c.normal_impulse[1]) > 0;
                        }
                      });
   for (std::uint32_t r = 0; r < constraint_contacts.size(); ++r) {
+    if (hit_marks[r] == 0) continue;
     const Contact& c = contacts[constraint_contacts[r]];
-    // A hit: the shapes met fast and the contact pushed (a speculative point that never
-    // closed does not count).
-    if (c.hit_events && c.approach_speed > def.hit_event_threshold &&
-        std::max(c.normal_impulse[0], c.normal_impulse[1]) > 0) {
-      hit_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b), c.approach_point,
-                            c.manifold.normal, c.approach_speed});
-    }
+    hit_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b), c.approach_point,
+                          c.manifold.normal, c.approach_speed});
   }
 
   // Each body's step finished in one visit while its records are at hand, bodies in parallel.

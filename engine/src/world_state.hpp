@@ -105,6 +105,7 @@ struct WorldState {
   // Per solver body, this step: whether a shape's box left its broadphase box (found while the
   // body's records are at hand, so the broadphase's serial update visits only those).
   std::vector<std::uint8_t> boxes_left;
+  std::vector<std::uint8_t> hit_marks;  // per constraint: whether it is a hit (solve)
   std::vector<detail::SolverBodyInfo> solver_info;
   std::vector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
   std::vector<detail::ConstraintBodies> constraint_bodies, sorted_bodies;
