@@ -39,17 +39,18 @@ void WorldState::update_islands() {
   const auto enter = [&](std::uint32_t i) {
     island_stamp[i] = step_count;
     island_parent[i] = i;
+    island_sleep[i] = def.time_to_sleep;
     island_members.push_back(i);
   };
-  // A moving kinematic body keeps what it is jointed to awake, as what it touches.
-  const auto kept_awake_by_joint = [&](Body& b, const detail::JointBodies& joint) {
-    for (std::uint32_t m = 0; m < joint.count; ++m) {
-      const Body& other = bodies[joint.body[m]];
-      if (other.type == BodyType::kinematic &&
-          (other.velocity.squaredNorm() > 0 || other.angular_velocity != 0)) {
-        b.sleep_time = 0;
-      }
-    }
+  const auto reached = [&](std::uint32_t i) { return island_stamp[i] == step_count; };
+  // A moving kinematic body keeps what it touches or is jointed to awake.
+  const auto moving_kinematic = [](const Body& b) {
+    return b.type == BodyType::kinematic &&
+           (b.velocity.squaredNorm() > 0 || b.angular_velocity != 0);
+  };
+  const auto driven = [&](const detail::JointBodies& joint) {
+    return std::any_of(joint.body.begin(), joint.body.begin() + joint.count,
+                       [&](std::uint32_t m) { return moving_kinematic(bodies[m]); });
   };
   const std::size_t listed = awake_list.size();
   for (std::size_t k = 0; k < listed; ++k) {
@@ -66,7 +67,7 @@ void WorldState::update_islands() {
       Body& b = bodies[i];
       const auto reach = [&](std::uint32_t j) {
         if (!links(bodies[j])) return;
-        if (island_stamp[j] != step_count) {
+        if (!reached(j)) {
           enter(j);
           island_stack.push_back(j);
         }
@@ -78,14 +79,14 @@ void WorldState::update_islands() {
       }
       for (const std::uint32_t ji : b.joints) {
         const detail::JointBodies& joint = joint_bodies[ji];
-        kept_awake_by_joint(b, joint);
+        if (driven(joint)) b.sleep_time = 0;
         for (std::uint32_t m = 0; m < joint.count; ++m) reach(joint.body[m]);
       }
     }
   };
   const auto join_dynamic = [&](std::uint32_t a, std::uint32_t b) {
-    if (island_stamp[a] != step_count) enter_sleeping_island(a);
-    if (island_stamp[b] != step_count) enter_sleeping_island(b);
+    if (!reached(a)) enter_sleeping_island(a);
+    if (!reached(b)) enter_sleeping_island(b);
     join(a, b);
   };
   const auto link = [&](std::uint32_t a, std::uint32_t b) {
@@ -99,32 +100,29 @@ void WorldState::update_islands() {
       if (c.manifold.point_count > 0) join_dynamic(c.body_a, c.body_b);
       continue;
     }
-    // A moving kinematic body keeps what it touches awake.
     if (!c.touching) continue;
     Body& a = bodies[c.body_a];
     Body& b = bodies[c.body_b];
-    if (a.type != BodyType::kinematic && b.type != BodyType::kinematic) continue;
-    Body& kinematic = a.type == BodyType::kinematic ? a : b;
-    Body& other = a.type == BodyType::kinematic ? b : a;
-    if (kinematic.velocity.squaredNorm() > 0 || kinematic.angular_velocity != 0) {
-      other.sleep_time = 0;
-    }
+    const bool a_kinematic = a.type == BodyType::kinematic;
+    if (moving_kinematic(a_kinematic ? a : b)) (a_kinematic ? b : a).sleep_time = 0;
   }
   // Joints in slot order from their compact copies, not through each body's list (a cache
-  // miss on the joint's record per visit): each joint of a body in an island links it to its
-  // other bodies. A body entered during this pass had its joints walked then; walking them
-  // again changes nothing.
+  // miss on the joint's record per visit): a joint with a body in an island links its bodies
+  // to each other. A body a link enters had its joints walked then.
   for (const detail::JointBodies& joint : joint_bodies) {
-    for (std::uint32_t k = 0; k < joint.count; ++k) {
-      const std::uint32_t i = joint.body[k];
-      if (island_stamp[i] != step_count) continue;
-      kept_awake_by_joint(bodies[i], joint);
-      for (std::uint32_t m = 0; m < joint.count; ++m) link(i, joint.body[m]);
+    const auto first = joint.body.begin(), last = first + joint.count;
+    if (std::none_of(first, last, reached)) continue;
+    if (driven(joint)) {
+      for (auto i = first; i != last; ++i) {
+        if (reached(*i)) bodies[*i].sleep_time = 0;
+      }
+    }
+    for (auto i = first; i != last; ++i) {
+      for (auto j = i + 1; j != last; ++j) link(*i, *j);
     }
   }
 
   // Each island's shortest rest, then its fate.
-  for (const std::uint32_t i : island_members) island_sleep[i] = def.time_to_sleep;
   for (const std::uint32_t i : island_members) {
     const Body& b = bodies[i];
     Real& rest = island_sleep[find(i)];
