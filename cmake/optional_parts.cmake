@@ -107,9 +107,11 @@ if(MINK_WITH_PYTHON)
   execute_process(COMMAND ${Python3_EXECUTABLE} -c "import numpy"
                   RESULT_VARIABLE mink_numpy_missing OUTPUT_QUIET ERROR_QUIET)
   if(mink_numpy_missing)
-    mink_missing_dependency("MINK_WITH_PYTHON"
-                            "numpy for ${Python3_EXECUTABLE} (another interpreter: "
-                            "-DPython3_EXECUTABLE=PATH)" python3-numpy MINK_WITH_PYTHON)
+    # One argument: CMake passes two adjacent quoted strings as two arguments.
+    mink_missing_dependency(
+      "MINK_WITH_PYTHON"
+      "numpy for ${Python3_EXECUTABLE} (another interpreter: -DPython3_EXECUTABLE=PATH)"
+      python3-numpy MINK_WITH_PYTHON)
   endif()
   # The module links the static libraries into a shared object: their code must be
   # position-independent. Nothing interposes their symbols, so calls between them may still
