@@ -128,7 +128,7 @@ void WorldState::update_mass(Body& b) {
   }
   if (!std::isfinite(b.min_extent)) b.min_extent = def.linear_slop;
   const Vec2 old_center = b.center;
-  b.center = b.origin + b.rotation.apply(b.local_center);
+  detail::place_center(b);
   // Material points keep their velocity when the centre moves within the body.
   const Vec2 shift = b.center - old_center;
   b.velocity += b.angular_velocity * Vec2(-shift.y(), shift.x());
@@ -299,7 +299,7 @@ void World::set_transform(BodyId id, const Vec2& position, Real angle) {
   for (std::uint32_t s : b.shapes) w.update_seams(s, true);  // the old neighbours
   b.origin = position;
   b.rotation = Rotation::from_angle(angle);
-  b.center = b.origin + b.rotation.apply(b.local_center);
+  detail::place_center(b);
   for (std::uint32_t s : b.shapes) {
     detail::Shape& shape = w.shapes[s];
     w.update_shape_aabb(shape, b);

@@ -6,6 +6,7 @@
 #include "mink/engine/body_def.hpp"
 #include "mink/narrowphase/pose.hpp"
 #include "mink/narrowphase/shape_geometry.hpp"
+#include "world_grid.hpp"
 
 namespace mink::detail {
 
@@ -56,6 +57,15 @@ struct alignas(64) Body {
 
   Pose pose() const { return {origin, rotation}; }
 };
+
+// The centre of mass from the origin, and the origin from the centre, each the other plus an
+// offset on the grid (world_grid.hpp), so both stay on it.
+inline void place_center(Body& b) {
+  b.center = b.origin + on_grid(b.rotation.apply(b.local_center));
+}
+inline void place_origin(Body& b) {
+  b.origin = b.center - on_grid(b.rotation.apply(b.local_center));
+}
 
 // Moves in a step: awake, enabled and not static.
 inline bool moves(const Body& b) {

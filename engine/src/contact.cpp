@@ -241,7 +241,12 @@ bool WorldState::update_manifold(Contact& c) const {
   const Body& body_b = bodies[c.body_b];
   const Shape& shape_a = shapes[c.shape_a];
   const Shape& shape_b = shapes[c.shape_b];
-  const Pose pose_a = body_a.pose(), pose_b = body_b.pose();
+  // The pair is measured from A's origin, not the world's, so that where it lies does not
+  // round what is found (world_grid.hpp); its points go back to the world on the grid.
+  const Vec2 frame_origin = body_a.origin;
+  const Pose pose_a{Vec2(0, 0), body_a.rotation};
+  const Pose pose_b{body_b.origin - frame_origin, body_b.rotation};
+  const auto to_world = [&](const Vec2& p) -> Vec2 { return frame_origin + detail::on_grid(p); };
   const Rotation& ra = pose_a.rotation;
   const Pose relative = relative_pose(pose_a, pose_b);
   detail::ManifoldCache& cache = c.cache;
@@ -265,7 +270,7 @@ bool WorldState::update_manifold(Contact& c) const {
       const Vec2 on_b = pose_b.apply(cache.on_b[j]);
       ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
       p.separation = normal.dot(on_b - on_a);
-      p.point = 0.5 * (on_a + on_b);
+      p.point = to_world(0.5 * (on_a + on_b));
     }
   } else {
     const Manifold old = c.manifold;
@@ -285,7 +290,7 @@ bool WorldState::update_manifold(Contact& c) const {
             collide_hulls(std::get<RoundedPolygon>(shape_a.geometry).hull, pose_a,
                           std::get<RoundedPolygon>(shape_b.geometry).hull, pose_b, speculative);
         if (!shape_a.internal_edges.empty() || !shape_b.internal_edges.empty()) {
-          smooth_seam(c, speculative);
+          smooth_seam(c, pose_a, pose_b, speculative);
         }
       } else {
         c.manifold =
@@ -302,6 +307,10 @@ bool WorldState::update_manifold(Contact& c) const {
         cache.on_a[j] = pose_a.apply_inverse(p.point - 0.5 * p.separation * normal);
         cache.on_b[j] = pose_b.apply_inverse(p.point + 0.5 * p.separation * normal);
       }
+    }
+    for (int j = 0; j < c.manifold.point_count; ++j) {
+      ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+      p.point = to_world(p.point);
     }
     // Warm start: carry the impulses of the point with the same feature id.
     for (int j = 0; j < c.manifold.point_count; ++j) {

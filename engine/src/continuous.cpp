@@ -37,7 +37,7 @@ Sweep WorldState::solver_sweep(std::uint32_t solver_index) const {
   Sweep sweep;
   sweep.local_center = b.local_center;
   sweep.center1 = b.center;
-  sweep.center0 = b.center - Vec2(sb.dpx, sb.dpy);
+  sweep.center0 = b.center - detail::on_grid(Vec2(sb.dpx, sb.dpy));  // as write_back moved it
   // (qc, qs) is the step's rotation exactly, up to whole turns; the summed angle tells how
   // many (it differs from the exact turn by far less than half a turn).
   const Real exact = std::atan2(sb.qs, sb.qc);
@@ -169,14 +169,24 @@ bool is_still(const Sweep& sweep) {
 
 }  // namespace
 
-// The first touch of `fast`'s shapes with `other_shape` moving by `other_sweep`, if it comes
-// before `fast.fraction`. A pair already within contact range when the step began is the
+// The first touch of `fast`'s shapes with `other_shape` moving by `other_world_sweep`, if it
+// comes before `fast.fraction`. A pair already within contact range when the step began is the
 // contact's to keep apart (sweeping the surfaces would stop a body sliding along a floor at
 // once); the sweep then only keeps the shape's middle from crossing the other shape, which a
 // fast-spinning or corner-sliding body can otherwise do within one step.
 void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
-                            const Sweep& other_sweep) const {
+                            const Sweep& other_world_sweep) const {
   const Shape& o = shapes[other_shape];
+  // Both sweeps measured from where the fast body starts, so that where the pair lies does not
+  // round what is found (world_grid.hpp).
+  const Vec2 frame_origin = fast.sweep.center0;
+  const auto measured_from_start = [&](Sweep sweep) {
+    sweep.center0 -= frame_origin;
+    sweep.center1 -= frame_origin;
+    return sweep;
+  };
+  const Sweep fast_sweep = measured_from_start(fast.sweep);
+  const Sweep other_sweep = measured_from_start(other_world_sweep);
   // Beside a still shape, most sweeps stay outside one of its faces: cheaper to see than any
   // time of impact.
   const bool still = is_still(other_sweep);
@@ -187,24 +197,24 @@ void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
     const Real tolerance = 0.25 * def.linear_slop;
     const Real target = slop_target(f.geometry, o.geometry, def.linear_slop);
     if (still &&
-        clear_of_a_face(f.geometry, fast.sweep, o.geometry, still_pose, target + tolerance)) {
+        clear_of_a_face(f.geometry, fast_sweep, o.geometry, still_pose, target + tolerance)) {
       continue;
     }
     const ShapeDistance start =
-        shape_distance(f.geometry, fast.sweep.pose_at(0), o.geometry, other_sweep.pose_at(0));
+        shape_distance(f.geometry, fast_sweep.pose_at(0), o.geometry, other_sweep.pose_at(0));
     const bool near = start.overlap || start.distance < 4 * def.linear_slop;
     ShapeGeometry middle;
     if (near) {
       const std::optional<Circle> circle = middle_circle(f.geometry);
       if (!circle) continue;
       middle = *circle;
-      if (still && clear_of_a_face(middle, fast.sweep, o.geometry, still_pose, 3 * tolerance)) {
+      if (still && clear_of_a_face(middle, fast_sweep, o.geometry, still_pose, 3 * tolerance)) {
         continue;
       }
     }
     TimeOfImpactInput input;
     input.shape_a = near ? &middle : &f.geometry;
-    input.sweep_a = fast.sweep;
+    input.sweep_a = fast_sweep;
     input.shape_b = &o.geometry;
     input.sweep_b = other_sweep;
     input.max_fraction = fast.fraction;
@@ -421,10 +431,11 @@ void WorldState::solve_continuous() {
     if (fast.fraction >= 1) continue;
     ++continuous.hits;
     Body& b = bodies[fast.body];
-    const Pose pose = fast.sweep.pose_at(fast.fraction);
-    b.origin = pose.position;
-    b.rotation = pose.rotation;
-    b.center = b.origin + b.rotation.apply(b.local_center);
+    // As Sweep::pose_at, with the way to the touch on the grid (world_grid.hpp).
+    const Sweep& sweep = fast.sweep;
+    b.rotation = sweep.pose_at(fast.fraction).rotation;
+    b.center = sweep.center0 + detail::on_grid(fast.fraction * (sweep.center1 - sweep.center0));
+    detail::place_origin(b);
     for (const std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b);
     boxes_left[fast.solver_index] = 1;
   }

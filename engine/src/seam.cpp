@@ -99,14 +99,15 @@ void WorldState::update_seams(std::uint32_t shape_index, bool removing) {
 // A contact of a sharp polygon with a seam: when the normal could only come from a covered
 // edge (or a corner next to one), the manifold is built again against the nearest uncovered
 // edge as a chain segment whose covered neighbours continue it flat. False when the manifold
-// stands as it was.
-bool WorldState::smooth_seam(detail::Contact& c, Real speculative_distance) const {
+// stands as it was. The poses are the bodies' in the frame the manifold is measured in.
+bool WorldState::smooth_seam(detail::Contact& c, const Pose& pose_a, const Pose& pose_b,
+                             Real speculative_distance) const {
   const bool seam_on_a = !shapes[c.shape_a].internal_edges.empty();
   const Shape& seam = shapes[seam_on_a ? c.shape_a : c.shape_b];
   const Shape& other = shapes[seam_on_a ? c.shape_b : c.shape_a];
   if (c.manifold.point_count == 0) return false;
   const PreparedHull& hull = std::get<RoundedPolygon>(seam.geometry).hull;
-  const Pose seam_pose = bodies[seam.body].pose();
+  const Pose& seam_pose = seam_on_a ? pose_a : pose_b;
   const Vec2 towards_other = seam_on_a ? c.manifold.normal : Vec2(-c.manifold.normal);
   const Vec2 local = seam_pose.rotation.apply_inverse(towards_other);
   const auto normals = hull.normals();
@@ -139,7 +140,7 @@ bool WorldState::smooth_seam(detail::Contact& c, Real speculative_distance) cons
   const Vec2 ghost1 = internal[(face + n - 1) % n] ? Vec2(p1 + (p1 - p2)) : v[(face + n - 1) % n];
   const Vec2 ghost2 = internal[(face + 1) % n] ? Vec2(p2 + (p2 - p1)) : v[(face + 2) % n];
   const ShapeGeometry segment = ChainSegment{ghost1, Segment{p1, p2}, ghost2};
-  const Pose other_pose = bodies[other.body].pose();
+  const Pose& other_pose = seam_on_a ? pose_b : pose_a;
   c.manifold =
       seam_on_a
           ? collide_shapes(segment, seam_pose, other.geometry, other_pose, speculative_distance)

@@ -265,17 +265,17 @@ void WorldState::write_back(std::uint32_t solver_index) {
       qc = c * inv_length;
       qs = s * inv_length;
     }
-    b.center += moved;
+    b.center += detail::on_grid(moved);
   } else {
     b.velocity = Vec2(sb.vx, sb.vy);
     b.angular_velocity = sb.w;
-    b.center += Vec2(sb.dpx, sb.dpy);
+    b.center += detail::on_grid(Vec2(sb.dpx, sb.dpy));
   }
   const Real c = qc * b.rotation.cos - qs * b.rotation.sin;
   const Real s = qs * b.rotation.cos + qc * b.rotation.sin;
   const Real inv_length = 1 / std::sqrt(c * c + s * s);
   b.rotation = {c * inv_length, s * inv_length};
-  b.origin = b.center - b.rotation.apply(b.local_center);
+  detail::place_origin(b);
   b.force = Vec2(0, 0);
   b.torque = 0;
 }

@@ -154,7 +154,8 @@ struct WorldState {
   void refresh_proxy(std::uint32_t shape_index);
   // seam.cpp
   void update_seams(std::uint32_t shape_index, bool removing);
-  bool smooth_seam(detail::Contact& contact, Real speculative_distance) const;
+  bool smooth_seam(detail::Contact& contact, const Pose& pose_a, const Pose& pose_b,
+                   Real speculative_distance) const;
   // contact.cpp
   void destroy_contact(std::uint32_t index);
   void set_touching(detail::Contact& contact, bool touching);

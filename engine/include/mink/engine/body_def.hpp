@@ -31,6 +31,17 @@ inline constexpr Real max_mass_property = 1e30;
 /// between bodies would too (a body at -2e306 m turned a world NaN).
 inline constexpr Real max_world_coordinate = 1e15;
 
+/// The grid (m) a step moves bodies on: each step's motion, and a centre of mass's offset from
+/// its body's origin, are rounded to multiples of it, which doubles hold exactly out to
+/// position_grid_reach. A body placed on the grid stays on it, so a scene moved by a whole
+/// number of grid steps, anywhere within that reach, moves bit for bit as it does at the
+/// origin (doubles 10^7 m out are this far apart; at 1 m they are 2.2e-16 m apart, and rounding
+/// each motion there more finely than far away made the same scene settle differently).
+inline constexpr Real position_grid_step = 0x1p-29;  // 1.9e-9 m
+/// How far from the origin (m, on each axis) the multiples of position_grid_step are exact
+/// doubles: 2^24 m, 1.7e7 m.
+inline constexpr Real position_grid_reach = 0x1p24;
+
 /// Everything World::create_body needs; plain data. Units: metres, radians, seconds.
 struct BodyDef {
   BodyType type = BodyType::static_body;  ///< static unless set
