@@ -21,27 +21,34 @@ using detail::Shape;
 
 namespace {
 
-void replace_in(std::vector<std::uint32_t>& list, std::uint32_t from, std::uint32_t to) {
-  *std::find(list.begin(), list.end(), from) = to;
-}
-
-void remove_from(std::vector<std::uint32_t>& list, std::uint32_t value) {
-  const auto at = std::find(list.begin(), list.end(), value);
-  *at = list.back();
-  list.pop_back();
-}
-
-void add_contact_to(Body& body, std::uint32_t contact, bool other_fixed) {
+// Lists the contact in the body's contacts; returns where.
+std::uint32_t add_contact_to(Body& body, std::uint32_t contact, bool other_fixed) {
   body.contacts.push_back(contact);
   body.fixed_contacts += other_fixed ? 1 : 0;
-}
-
-void remove_contact_from(Body& body, std::uint32_t contact, bool other_fixed) {
-  remove_from(body.contacts, contact);
-  body.fixed_contacts -= other_fixed ? 1 : 0;
+  return static_cast<std::uint32_t>(body.contacts.size() - 1);
 }
 
 }  // namespace
+
+// Takes the contact at `slot` out of body `index`'s list, the list's last taking its place.
+void WorldState::remove_contact_from(std::uint32_t index, std::uint32_t slot, bool other_fixed) {
+  Body& body = bodies[index];
+  const std::uint32_t moved = body.contacts.back();
+  body.contacts[slot] = moved;
+  body.contacts.pop_back();
+  contact_slots[moved][contacts[moved].body_a == index ? 0 : 1] = slot;
+  body.fixed_contacts -= other_fixed ? 1 : 0;
+}
+
+void WorldState::rebuild_contact_slots() {
+  contact_slots.assign(contacts.size(), {0, 0});
+  for (std::uint32_t b = 0; b < bodies.size(); ++b) {
+    const std::vector<std::uint32_t>& list = bodies[b].contacts;
+    for (std::uint32_t k = 0; k < list.size(); ++k) {
+      contact_slots[list[k]][contacts[list[k]].body_a == b ? 0 : 1] = k;
+    }
+  }
+}
 
 void WorldState::set_touching(Contact& c, bool touching) {
   if (c.touching == touching) return;
@@ -91,17 +98,19 @@ void WorldState::destroy_contact(std::uint32_t index) {
   if (c.touching && c.events) end_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b)});
   set_touching(c, false);
   contact_index.erase(detail::pair_key(c.proxy_a, c.proxy_b));
-  remove_contact_from(bodies[c.body_a], index, c.b_fixed);
-  remove_contact_from(bodies[c.body_b], index, c.a_fixed);
+  remove_contact_from(c.body_a, contact_slots[index][0], c.b_fixed);
+  remove_contact_from(c.body_b, contact_slots[index][1], c.a_fixed);
   const std::uint32_t last = static_cast<std::uint32_t>(contacts.size() - 1);
   if (index != last) {
     contacts[index] = contacts[last];
-    Contact& moved = contacts[index];
-    contact_index[detail::pair_key(moved.proxy_a, moved.proxy_b)] = index;
-    replace_in(bodies[moved.body_a].contacts, last, index);
-    replace_in(bodies[moved.body_b].contacts, last, index);
+    contact_slots[index] = contact_slots[last];
+    const Contact& moved = contacts[index];
+    contact_index.set(detail::pair_key(moved.proxy_a, moved.proxy_b), index);
+    bodies[moved.body_a].contacts[contact_slots[index][0]] = index;
+    bodies[moved.body_b].contacts[contact_slots[index][1]] = index;
   }
   contacts.pop_back();
+  contact_slots.pop_back();
 }
 
 namespace {
@@ -167,8 +176,8 @@ void WorldState::update_pairs() {
   std::sort(pair_events.begun.begin(), pair_events.begun.end(), by_ids);
 
   for (const ProxyPair& pair : pair_events.ended) {
-    const auto found = contact_index.find(detail::pair_key(pair.a, pair.b));
-    if (found != contact_index.end()) destroy_contact(found->second);
+    const std::uint32_t found = contact_index.find(detail::pair_key(pair.a, pair.b));
+    if (found != detail::ContactMap::kNone) destroy_contact(found);
   }
   for (const ProxyPair& pair : pair_events.begun) {
     const auto sa = static_cast<std::uint32_t>(broadphase.user_data(pair.a));
@@ -198,10 +207,10 @@ void WorldState::update_pairs() {
     c.a_fixed = bodies[c.body_a].type != BodyType::dynamic;
     c.b_fixed = bodies[c.body_b].type != BodyType::dynamic;
     const auto index = static_cast<std::uint32_t>(contacts.size());
-    contact_index.emplace(key, index);
+    contact_index.set(key, index);
     contacts.push_back(c);
-    add_contact_to(bodies[c.body_a], index, c.b_fixed);
-    add_contact_to(bodies[c.body_b], index, c.a_fixed);
+    contact_slots.push_back({add_contact_to(bodies[c.body_a], index, c.b_fixed),
+                             add_contact_to(bodies[c.body_b], index, c.a_fixed)});
   }
 }
 

@@ -164,10 +164,11 @@ std::unique_ptr<WorldState> parse(std::span<const std::uint8_t> bytes, const Wor
     throw SnapshotError(std::string("snapshot with bad world settings: ") + e.what());
   }
   for (std::uint32_t i = 0; i < state->joints.size(); ++i) state->set_joint_bodies(i);
+  state->rebuild_contact_slots();
   state->contact_index.reserve(state->contacts.size());
   for (std::uint32_t i = 0; i < state->contacts.size(); ++i) {
     const detail::Contact& c = state->contacts[i];
-    state->contact_index.emplace(detail::pair_key(c.proxy_a, c.proxy_b), i);
+    state->contact_index.set(detail::pair_key(c.proxy_a, c.proxy_b), i);
   }
   return state;
 }

@@ -1,13 +1,14 @@
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "body.hpp"
 #include "constraint_graph.hpp"
 #include "contact.hpp"
+#include "contact_map.hpp"
 #include "contact_solver.hpp"
 #include "continuous.hpp"
 #include "id_pool.hpp"
@@ -60,7 +61,11 @@ struct WorldState {
   std::vector<ProxyId> pending_proxy_destroys;
 
   std::vector<detail::Contact> contacts;
-  std::unordered_map<std::uint64_t, std::uint32_t> contact_index;
+  detail::ContactMap contact_index;
+  // Where each contact is listed in its bodies' contact lists ([0]: body_a's, [1]: body_b's),
+  // so removing it edits the lists in place rather than searching them (a static body holding
+  // a ring of chain segments lists a thousand). Derived: rebuilt when a snapshot is loaded.
+  std::vector<std::array<std::uint32_t, 2>> contact_slots;
   std::vector<detail::SensorState> sensors;  // sorted by sensor shape slot
   std::size_t touching_count = 0;            // contacts whose touching flag is set
   detail::ConstraintGraph graph;
@@ -158,6 +163,8 @@ struct WorldState {
                    Real speculative_distance) const;
   // contact.cpp
   void destroy_contact(std::uint32_t index);
+  void remove_contact_from(std::uint32_t body, std::uint32_t slot, bool other_fixed);
+  void rebuild_contact_slots();
   void set_touching(detail::Contact& contact, bool touching);
   // Gives a contact its graph colour when it starts to have points (at the end of collide, in
   // a fixed order) and takes it back when it has none.
