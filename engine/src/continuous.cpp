@@ -29,6 +29,7 @@ namespace mink {
 using detail::Body;
 using detail::FastBody;
 using detail::Shape;
+using detail::SweepEnds;
 
 // The sweep of a body the solver moved this step, from the solver's record of it.
 Sweep WorldState::solver_sweep(std::uint32_t solver_index) const {
@@ -126,11 +127,11 @@ void for_each_face(const ShapeGeometry& geometry, const Pose& pose, Face&& face)
 // line and turns the body evenly, so along a normal a point at distance r from the centre
 // of mass dips below the straight line between its ends by at most r (1 - cos(turn / 2)) (a
 // turn within half a revolution; 2 r beyond).
-bool clear_of_a_face(const ShapeGeometry& moving, const Sweep& sweep, const ShapeGeometry& still,
-                     const Pose& still_pose, Real clearance) {
-  const Pose start = sweep.pose_at(0), end = sweep.pose_at(1);
-  const Real turn = std::abs(sweep.angle1 - sweep.angle0);
-  const Real dip = turn <= std::numbers::pi ? 1 - std::cos(0.5 * turn) : 2;
+bool clear_of_a_face(const ShapeGeometry& moving, const Sweep& sweep, const SweepEnds& ends,
+                     const ShapeGeometry& still, const Pose& still_pose, Real clearance) {
+  const Pose& start = ends.start;
+  const Pose& end = ends.end;
+  const Real dip = ends.dip;
   const Real radius = detail::shape_radius(moving);
   bool clear = false;
   for_each_face(still, still_pose, [&](const Vec2& normal, Real offset) {
@@ -180,35 +181,33 @@ void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
   // Both sweeps measured from where the fast body starts, so that where the pair lies does not
   // round what is found (world_grid.hpp).
   const Vec2 frame_origin = fast.sweep.center0;
-  const auto measured_from_start = [&](Sweep sweep) {
-    sweep.center0 -= frame_origin;
-    sweep.center1 -= frame_origin;
-    return sweep;
-  };
-  const Sweep fast_sweep = measured_from_start(fast.sweep);
-  const Sweep other_sweep = measured_from_start(other_world_sweep);
+  const Sweep& fast_sweep = fast.local_sweep;
+  Sweep other_sweep = other_world_sweep;
+  other_sweep.center0 -= frame_origin;
+  other_sweep.center1 -= frame_origin;
   // Beside a still shape, most sweeps stay outside one of its faces: cheaper to see than any
   // time of impact.
   const bool still = is_still(other_sweep);
-  const Pose still_pose = other_sweep.pose_at(0);
+  const Pose other_start = other_sweep.pose_at(0);
   for (const std::uint32_t s : bodies[fast.body].shapes) {
     const Shape& f = shapes[s];
     if (!should_make_contact(s, other_shape)) continue;
     const Real tolerance = 0.25 * def.linear_slop;
     const Real target = slop_target(f.geometry, o.geometry, def.linear_slop);
-    if (still &&
-        clear_of_a_face(f.geometry, fast_sweep, o.geometry, still_pose, target + tolerance)) {
+    if (still && clear_of_a_face(f.geometry, fast_sweep, fast.local_ends, o.geometry, other_start,
+                                 target + tolerance)) {
       continue;
     }
     const ShapeDistance start =
-        shape_distance(f.geometry, fast_sweep.pose_at(0), o.geometry, other_sweep.pose_at(0));
+        shape_distance(f.geometry, fast.local_ends.start, o.geometry, other_start);
     const bool near = start.overlap || start.distance < 4 * def.linear_slop;
     ShapeGeometry middle;
     if (near) {
       const std::optional<Circle> circle = middle_circle(f.geometry);
       if (!circle) continue;
       middle = *circle;
-      if (still && clear_of_a_face(middle, fast_sweep, o.geometry, still_pose, 3 * tolerance)) {
+      if (still && clear_of_a_face(middle, fast_sweep, fast.local_ends, o.geometry, other_start,
+                                   3 * tolerance)) {
         continue;
       }
     }
@@ -285,8 +284,7 @@ void WorldState::solve_continuous() {
     tasks.parallel_for(count, 16, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
       for (std::uint32_t i = begin; i < end; ++i) {
         FastBody& fast = continuous.fast[i];
-        fast.sweep = solver_sweep(fast.solver_index);
-        fast.has_sweep = true;
+        fast.set_sweep(solver_sweep(fast.solver_index));
         fast.rotation0 = Rotation::from_angle(fast.sweep.angle0);
         fast.rotation1 = Rotation::from_angle(fast.sweep.angle1);
       }
@@ -370,10 +368,7 @@ void WorldState::solve_continuous() {
           if (fast.bullet || bodies[o.body].type != BodyType::dynamic) found.push_back(index);
         }
       }
-      if (!fast.has_sweep && !found.empty()) {
-        fast.sweep = solver_sweep(fast.solver_index);
-        fast.has_sweep = true;
-      }
+      if (!fast.has_sweep && !found.empty()) fast.set_sweep(solver_sweep(fast.solver_index));
       // The same shape in any order of the broadphase gives the same first touch, but the
       // order is fixed anyway so the work done is too (and a shape met by several of the
       // body's shapes is swept once).
@@ -420,9 +415,7 @@ void WorldState::solve_continuous() {
   // Sensors see fast bodies along their sweeps.
   if (!sensors.empty()) {
     for (FastBody& fast : continuous.fast) {
-      if (fast.has_sweep) continue;
-      fast.sweep = solver_sweep(fast.solver_index);
-      fast.has_sweep = true;
+      if (!fast.has_sweep) fast.set_sweep(solver_sweep(fast.solver_index));
     }
   }
   // Stopped bodies go back to where they first touched, keeping their velocity, and their

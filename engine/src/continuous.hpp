@@ -1,6 +1,8 @@
 #pragma once
 
+#include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <vector>
 
 #include "mink/broadphase/broadphase.hpp"
@@ -9,6 +11,19 @@
 
 namespace mink::detail {
 
+// What a sweep test reads of a sweep, worked out once: its poses at both ends, and how far its
+// turn bends a point's path below the straight line between them, per metre from the centre
+// of mass (1 - cos(turn / 2) for a turn within half a revolution; 2 beyond).
+struct SweepEnds {
+  Pose start, end;
+  Real dip = 0;
+  SweepEnds() = default;
+  explicit SweepEnds(const Sweep& sweep) : start(sweep.pose_at(0)), end(sweep.pose_at(1)) {
+    const Real turn = std::abs(sweep.angle1 - sweep.angle0);
+    dip = turn <= std::numbers::pi ? 1 - std::cos(0.5 * turn) : 2;
+  }
+};
+
 // A body that moved fast this step: its sweep over the step, the box around it, and the
 // fraction of the step it may keep (1 when nothing was in the way).
 struct FastBody {
@@ -16,6 +31,17 @@ struct FastBody {
   std::uint32_t solver_index = 0;
   Sweep sweep;  // valid once has_sweep: found only for a body with something to meet
   bool has_sweep = false;
+  // The sweep measured from its start (the frame each pair is swept in) and its ends.
+  Sweep local_sweep;
+  SweepEnds local_ends;
+  void set_sweep(const Sweep& world_sweep) {
+    sweep = world_sweep;
+    has_sweep = true;
+    local_sweep = world_sweep;
+    local_sweep.center0 = Vec2(0, 0);
+    local_sweep.center1 = world_sweep.center1 - world_sweep.center0;
+    local_ends = SweepEnds(local_sweep);
+  }
   // The sweep's start and end rotations, for fast bodies meeting each other (set with it then).
   Rotation rotation0{}, rotation1{};
   Aabb box;
