@@ -130,7 +130,7 @@ constexpr const char* kSelection =
     " `bodies`: None for every live body (World.bodies order), or a sequence of Body objects "
     "or of body indices (an int array).";
 
-std::string doc(const char* text) {
+std::string selection_doc(const char* text) {
   return std::string(text) + kSelection;
 }
 
@@ -138,34 +138,40 @@ std::string doc(const char* text) {
 
 void bind_batch_arrays(WorldClass& world) {
   // Docstrings must outlive the bindings.
-  static const std::string positions_doc = doc("Body origins, an (N, 2) float64 array.");
-  static const std::string angles_doc = doc("Body angles in radians, an (N,) float64 array.");
+  static const std::string positions_doc = selection_doc("Body origins, an (N, 2) float64 array.");
+  static const std::string angles_doc =
+      selection_doc("Body angles in radians, an (N,) float64 array.");
   static const std::string linear_doc =
-      doc("Velocities of the centres of mass (m/s), an (N, 2) float64 array.");
-  static const std::string angular_doc = doc("Angular velocities (rad/s), an (N,) float64 array.");
-  static const std::string centers_doc = doc("Centres of mass, world, an (N, 2) float64 array.");
-  static const std::string masses_doc = doc("Masses (kg), an (N,) float64 array.");
+      selection_doc("Velocities of the centres of mass (m/s), an (N, 2) float64 array.");
+  static const std::string angular_doc =
+      selection_doc("Angular velocities (rad/s), an (N,) float64 array.");
+  static const std::string centers_doc =
+      selection_doc("Centres of mass, world, an (N, 2) float64 array.");
+  static const std::string masses_doc = selection_doc("Masses (kg), an (N,) float64 array.");
   static const std::string inertias_doc =
-      doc("Rotational inertias about the centres of mass, an (N,) float64 array.");
-  static const std::string awake_doc = doc("Awake flags, an (N,) bool array.");
-  static const std::string states_doc =
-      doc("Position, angle and velocities in one (N, 6) float64 array: x, y, angle, vx, vy, w "
-          "(vx, vy of the centre of mass).");
+      selection_doc("Rotational inertias about the centres of mass, an (N,) float64 array.");
+  static const std::string awake_doc = selection_doc("Awake flags, an (N,) bool array.");
+  static const std::string states_doc = selection_doc(
+      "Position, angle and velocities in one (N, 6) float64 array: x, y, angle, vx, vy, w "
+      "(vx, vy of the centre of mass).");
   static const std::string set_positions_doc =
-      doc("Teleports the bodies' origins to the rows of an (N, 2) array (angles kept).");
-  static const std::string set_angles_doc = doc("Turns the bodies to an (N,) array of angles.");
+      selection_doc("Teleports the bodies' origins to the rows of an (N, 2) array (angles kept).");
+  static const std::string set_angles_doc =
+      selection_doc("Turns the bodies to an (N,) array of angles.");
   static const std::string set_transforms_doc =
-      doc("Teleports the bodies to (N, 2) positions and (N,) angles.");
+      selection_doc("Teleports the bodies to (N, 2) positions and (N,) angles.");
   static const std::string set_linear_doc =
-      doc("Sets the centres of mass' velocities from an (N, 2) array.");
-  static const std::string set_angular_doc = doc("Sets angular velocities from an (N,) array.");
-  static const std::string forces_doc =
-      doc("Applies (N, 2) forces (N, world) for the next step at (N, 2) world points (default: "
-          "the centres of mass).");
-  static const std::string impulses_doc =
-      doc("Applies (N, 2) linear impulses (N s, world) at (N, 2) world points (default: the "
-          "centres of mass).");
-  static const std::string torques_doc = doc("Applies an (N,) array of torques for the next step.");
+      selection_doc("Sets the centres of mass' velocities from an (N, 2) array.");
+  static const std::string set_angular_doc =
+      selection_doc("Sets angular velocities from an (N,) array.");
+  static const std::string forces_doc = selection_doc(
+      "Applies (N, 2) forces (N, world) for the next step at (N, 2) world points (default: "
+      "the centres of mass).");
+  static const std::string impulses_doc = selection_doc(
+      "Applies (N, 2) linear impulses (N s, world) at (N, 2) world points (default: the "
+      "centres of mass).");
+  static const std::string torques_doc =
+      selection_doc("Applies an (N,) array of torques for the next step.");
 
   const auto selection = py::arg("bodies") = py::none();
   world

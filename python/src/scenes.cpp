@@ -20,21 +20,21 @@ constexpr const char* kSettingsDoc =
     " Keyword arguments change world settings as `mink run --world KEY=VALUE` does (the "
     "scene file's world keys, and workers).";
 
-std::string doc(const char* text) {
+std::string settings_doc(const char* text) {
   return std::string(text) + kSettingsDoc;
 }
 
 }  // namespace
 
 void bind_scenes(py::module_& m, WorldClass& world) {
-  static const std::string load_doc =
-      doc("The World of a scene file (docs/scene-format.md): its bodies in the file's order "
-          "(World.bodies[i] is bodies[i] of the file), then its joints. Raises SceneFileError "
-          "naming the offending value's JSON path.");
-  static const std::string parse_doc = doc("The World of a scene given as JSON text.");
-  static const std::string builtin_doc =
-      doc("The World of a built-in scene (builtin_scene_names()); a scene that changes as it runs "
-          "(rain, junkyard) keeps its schedule, which acts before each World.step.");
+  static const std::string load_doc = settings_doc(
+      "The World of a scene file (docs/scene-format.md): its bodies in the file's order "
+      "(World.bodies[i] is bodies[i] of the file), then its joints. Raises SceneFileError "
+      "naming the offending value's JSON path.");
+  static const std::string parse_doc = settings_doc("The World of a scene given as JSON text.");
+  static const std::string builtin_doc = settings_doc(
+      "The World of a built-in scene (builtin_scene_names()); a scene that changes as it runs "
+      "(rain, junkyard) keeps its schedule, which acts before each World.step.");
 
   m.def(
        "load_scene",
