@@ -168,7 +168,12 @@ std::unique_ptr<WorldState> parse(std::span<const std::uint8_t> bytes, const Wor
   state->contact_index.reserve(state->contacts.size());
   for (std::uint32_t i = 0; i < state->contacts.size(); ++i) {
     const detail::Contact& c = state->contacts[i];
-    state->contact_index.set(detail::pair_key(c.proxy_a, c.proxy_b), i);
+    const std::uint64_t key = detail::pair_key(c.proxy_a, c.proxy_b);
+    if (state->contact_index.contains(key)) {
+      throw SnapshotError("snapshot with two contacts of the proxy pair (" +
+                          std::to_string(c.proxy_a) + ", " + std::to_string(c.proxy_b) + ")");
+    }
+    state->contact_index.set(key, i);
   }
   return state;
 }

@@ -47,6 +47,14 @@ void check_indices(const WorldState& w, ByteReader& in) {
     below(c.shape_a, shapes, "a contact's shape");
     below(c.shape_b, shapes, "a contact's shape");
     if (!color_ok(c.color)) in.fail("a contact colour out of range");
+    // A contact is found by its shapes' proxies (ended pairs, the contact map): they must be
+    // the live shapes' own.
+    const Shape& a = w.shapes[c.shape_a];
+    const Shape& b = w.shapes[c.shape_b];
+    if (!a.alive || !b.alive || a.proxy != c.proxy_a || b.proxy != c.proxy_b ||
+        c.proxy_a == null_proxy || c.proxy_b == null_proxy) {
+      in.fail("a contact whose proxies are not its live shapes' own");
+    }
   }
   for (const Joint& j : w.joints) {
     if (j.body_count < 2 || j.body_count > 4) in.fail("a joint with a bad body count");

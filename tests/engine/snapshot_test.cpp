@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -372,6 +373,43 @@ TEST(Snapshot, ValuesTheApiRefusesAreRefusedBehindAValidChecksum) {
   world.restore(replaced(0.123456789, 0.25));
   world.step();
   EXPECT_TRUE(test::all_finite(world));
+}
+
+// A contact behind a valid checksum whose proxies are not its shapes' own, or that misstates
+// which of its bodies are fixed, is refused: the step finds contacts by their proxies and links
+// islands by those flags without looking at the bodies again.
+TEST(Snapshot, AContactThatMisnamesItsProxiesOrBodiesIsRefused) {
+  World world;
+  const BodyId ground = world.create_body({});
+  ShapeDef ground_box = ShapeDef::box(20, 0.5);
+  ground_box.friction = 0.123456789;
+  world.create_shape(ground, ground_box);
+  test::add_box(world, {0, 1});
+  world.step();
+  ASSERT_EQ(world.counters().contacts, 1u);
+  const std::vector<std::uint8_t> snapshot = world.snapshot();
+  const std::uint64_t unchanged = world.state_hash();
+  // The contact's record: its friction (the shapes' mixed), restitution, shape and proxy
+  // indices, four flags, approach speed and point, colour, then its fixed flags.
+  const Real friction = std::sqrt(0.123456789 * ShapeDef{}.friction);
+  std::uint8_t pattern[sizeof(Real)];
+  std::memcpy(pattern, &friction, sizeof friction);
+  const auto at = std::search(snapshot.begin() + 36, snapshot.end(), pattern, pattern + 8);
+  ASSERT_NE(at, snapshot.end());
+  const auto proxies = static_cast<std::size_t>(at - snapshot.begin()) + 8 + 8 + 8;
+  const std::size_t a_fixed = proxies + 8 + 4 + 8 + 16 + 1;
+  const auto restored = [&](std::size_t offset, std::uint8_t value) {
+    std::vector<std::uint8_t> bytes = snapshot;
+    bytes[offset] = value;
+    return test::error_of<SnapshotError>([&] { world.restore(test::resealed(bytes)); });
+  };
+  std::uint32_t proxy_a = 0;
+  std::memcpy(&proxy_a, snapshot.data() + proxies, sizeof proxy_a);
+  EXPECT_NE(restored(proxies, static_cast<std::uint8_t>(proxy_a + 1)).find("proxies"),
+            std::string::npos);
+  ASSERT_LE(snapshot[a_fixed], 1);
+  EXPECT_NE(restored(a_fixed, snapshot[a_fixed] ^ 1).find("contact"), std::string::npos);
+  EXPECT_EQ(world.state_hash(), unchanged);
 }
 
 TEST(Snapshot, ARunSnapshotCarriesTheSchedule) {
