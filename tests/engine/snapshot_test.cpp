@@ -334,18 +334,25 @@ TEST(Snapshot, ErrorsNameWhatIsWrong) {
   EXPECT_NE(message(test::resealed(bytes)).find("at byte"), std::string::npos) << message(bytes);
 }
 
+// A box on a ground whose friction, kGroundFriction, is a value found once in a snapshot's
+// bytes; stepped once, so they touch.
+constexpr Real kGroundFriction = 0.123456789;
+void add_box_on_ground(World& world) {
+  const BodyId ground = world.create_body({});
+  ShapeDef ground_box = ShapeDef::box(20, 0.5);
+  ground_box.friction = kGroundFriction;
+  world.create_shape(ground, ground_box);
+  test::add_box(world, {0, 1});
+  world.step();
+}
+
 // A state that passes its checksum is still refused when it holds a value the API refuses:
 // such values stepped into NaN (a gravity of 1e175 m/s^2 did within a step).
 TEST(Snapshot, ValuesTheApiRefusesAreRefusedBehindAValidChecksum) {
   WorldDef def;
   def.gravity = Vec2(0, -9.87654321);
   World world(def);
-  const BodyId ground = world.create_body({});
-  ShapeDef ground_box = ShapeDef::box(20, 0.5);
-  ground_box.friction = 0.123456789;
-  world.create_shape(ground, ground_box);
-  test::add_box(world, {0, 1});
-  world.step();
+  add_box_on_ground(world);
   const std::vector<std::uint8_t> snapshot = world.snapshot();
   const std::uint64_t unchanged = world.state_hash();
   // The snapshot with the one occurrence of `was` replaced by `now`, resealed.
@@ -363,14 +370,14 @@ TEST(Snapshot, ValuesTheApiRefusesAreRefusedBehindAValidChecksum) {
     return test::error_of<SnapshotError>([&] { world.restore(replaced(was, now)); });
   };
   EXPECT_NE(message(-9.87654321, 1e175).find("gravity"), std::string::npos);
-  EXPECT_NE(message(0.123456789, -0.5).find("friction"), std::string::npos);
-  EXPECT_NE(message(0.123456789, std::numeric_limits<Real>::quiet_NaN()).find("non-finite"),
+  EXPECT_NE(message(kGroundFriction, -0.5).find("friction"), std::string::npos);
+  EXPECT_NE(message(kGroundFriction, std::numeric_limits<Real>::quiet_NaN()).find("non-finite"),
             std::string::npos);
   EXPECT_EQ(world.state_hash(), unchanged);
   // A world that never stepped (its broadphase never built) restores too.
   EXPECT_NO_THROW((void)World::from_snapshot(World().snapshot()));
   // The same bytes with in-range values are taken.
-  world.restore(replaced(0.123456789, 0.25));
+  world.restore(replaced(kGroundFriction, 0.25));
   world.step();
   EXPECT_TRUE(test::all_finite(world));
 }
@@ -380,18 +387,13 @@ TEST(Snapshot, ValuesTheApiRefusesAreRefusedBehindAValidChecksum) {
 // islands by those flags without looking at the bodies again.
 TEST(Snapshot, AContactThatMisnamesItsProxiesOrBodiesIsRefused) {
   World world;
-  const BodyId ground = world.create_body({});
-  ShapeDef ground_box = ShapeDef::box(20, 0.5);
-  ground_box.friction = 0.123456789;
-  world.create_shape(ground, ground_box);
-  test::add_box(world, {0, 1});
-  world.step();
+  add_box_on_ground(world);
   ASSERT_EQ(world.counters().contacts, 1u);
   const std::vector<std::uint8_t> snapshot = world.snapshot();
   const std::uint64_t unchanged = world.state_hash();
   // The contact's record: its friction (the shapes' mixed), restitution, shape and proxy
   // indices, four flags, approach speed and point, colour, then its fixed flags.
-  const Real friction = std::sqrt(0.123456789 * ShapeDef{}.friction);
+  const Real friction = std::sqrt(kGroundFriction * ShapeDef{}.friction);
   std::uint8_t pattern[sizeof(Real)];
   std::memcpy(pattern, &friction, sizeof friction);
   const auto at = std::search(snapshot.begin() + 36, snapshot.end(), pattern, pattern + 8);
