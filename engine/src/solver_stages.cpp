@@ -252,7 +252,7 @@ void WorldState::write_back(std::uint32_t solver_index) {
   if (b.type == BodyType::kinematic) {
     // A kinematic body's motion is prescribed, not solved: it moves in double precision as
     // the substeps move it (the solver's single-precision copy only served its contacts), so
-    // it arrives exactly where its velocity takes it.
+    // it arrives where its velocity takes it, to the grid step (world_grid.hpp).
     const Real h = dt / substeps;
     const Real hw = h * b.angular_velocity;
     Vec2 moved(0, 0);
