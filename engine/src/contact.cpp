@@ -312,14 +312,11 @@ bool WorldState::update_manifold(Contact& c) const {
       const Vec2 normal = c.manifold.normal;
       cache.normal = ra.apply_inverse(normal);
       for (int j = 0; j < c.manifold.point_count; ++j) {
-        const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
+        ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
         cache.on_a[j] = pose_a.apply_inverse(p.point - 0.5 * p.separation * normal);
         cache.on_b[j] = pose_b.apply_inverse(p.point + 0.5 * p.separation * normal);
+        p.point = to_world(p.point);
       }
-    }
-    for (int j = 0; j < c.manifold.point_count; ++j) {
-      ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
-      p.point = to_world(p.point);
     }
     // Warm start: carry the impulses of the point with the same feature id.
     for (int j = 0; j < c.manifold.point_count; ++j) {
