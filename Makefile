@@ -64,8 +64,14 @@ test: deps-test
 SANITIZED_CMAKE_FLAGS = -DCMAKE_UNITY_BUILD=ON $(CMAKE_FLAGS)
 
 # The same tests under AddressSanitizer + UndefinedBehaviorSanitizer, in their own build dir.
+# GCC 12's runtime takes a block of dynamic thread-local storage that glibc happened to allocate
+# 16 bytes into a page for one with the header glibc gave such blocks before 2.25, and reads the
+# words before it as that block's bounds: now and then LeakSanitizer's exit check crashed on
+# them after a test had passed (the render and command tests load libraries with such storage).
+# The runtime is told to leave __tls_get_addr alone.
 sanitize-test: deps-test
-	$(MAKE) test BUILD_DIR=build-asan BUILD_TYPE=RelWithDebInfo \
+	ASAN_OPTIONS="$(if $(ASAN_OPTIONS),$(ASAN_OPTIONS):)intercept_tls_get_addr=0" \
+	  $(MAKE) test BUILD_DIR=build-asan BUILD_TYPE=RelWithDebInfo \
 	  CMAKE_FLAGS="$(SANITIZED_CMAKE_FLAGS) -DMINK_SANITIZE=ON"
 
 # The engine tests that step on several threads (worker counts, an embedder's task system,
