@@ -189,12 +189,28 @@ void ProxyStore::fields(Archive& archive) {
     for (const Real size : size_) {
       if (!valid_size(size)) archive.in.fail("a broadphase proxy of size " + std::to_string(size));
     }
-    for (const ProxyId id : free_ids_) {
-      if (id >= n) archive.in.fail("a free proxy id beyond the proxies");
+    // create() hands out free ids and release_destroyed() frees destroyed ones, so each dead
+    // id is in exactly one of the two lists and no live one is in either; the count sizes the
+    // arrays a rebuild reserves.
+    std::vector<std::uint8_t> listed(n, 0);
+    const auto check_dead = [&](const std::vector<ProxyId>& ids, const char* which) {
+      for (const ProxyId id : ids) {
+        if (id >= n) archive.in.fail(std::string("a ") + which + " proxy id beyond the proxies");
+        if (alive_[id] != 0) archive.in.fail(std::string("a ") + which + " proxy id still alive");
+        if (listed[id]++ != 0) archive.in.fail("a dead proxy id listed twice");
+      }
+    };
+    check_dead(free_ids_, "free");
+    check_dead(destroyed_ids_, "destroyed");
+    std::size_t live = 0;
+    for (std::size_t id = 0; id < n; ++id) {
+      if (alive_[id] != 0) {
+        ++live;
+      } else if (listed[id] == 0) {
+        archive.in.fail("a dead proxy id neither free nor destroyed");
+      }
     }
-    for (const ProxyId id : destroyed_ids_) {
-      if (id >= n) archive.in.fail("a destroyed proxy id beyond the proxies");
-    }
+    if (count_ != live) archive.in.fail("a broadphase proxy count that is not its live proxies'");
   }
 }
 
