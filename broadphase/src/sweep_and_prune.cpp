@@ -728,7 +728,61 @@ void SweepAndPrune::fields(Archive& archive) {
     for (const ProxyId id : touched_ids_) {
       if (id >= ids) archive.in.fail("a touched proxy that does not exist");
     }
+    check_loaded_slots(archive.in);
   }
+}
+
+// What update_structure() and remove_entry() take on trust, checked for a loaded state: each
+// proxy's slot names the entry that holds it, the touched list holds each touched proxy once,
+// and a proxy has an entry exactly when the next update expects one (one created since has
+// none yet; one destroyed since still has its own).
+void SweepAndPrune::check_loaded_slots(ByteReader& in) const {
+  const std::size_t ids = store_.id_bound();
+  if (slot_.size() != ids || committed_.size() != ids || touched_.size() != ids) {
+    in.fail("broadphase per-proxy arrays not one entry per proxy");
+  }
+  const auto check_list = [&](const std::vector<Entry>& list, std::uint32_t bit) {
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const ProxyId id = list[i].id;
+      if (id == null_proxy) continue;
+      if (slot_[id] != (static_cast<std::uint32_t>(i) | bit)) {
+        in.fail("a broadphase entry its proxy's slot does not name: proxy " + std::to_string(id));
+      }
+    }
+  };
+  check_list(entries_, 0);
+  check_list(oversized_, kOversizedBit);
+  if (!std::is_sorted(entries_.begin(), entries_.end(), by_key)) {
+    in.fail("broadphase entries out of order");
+  }
+  constexpr std::uint8_t kAnyTouch = kMoved | kCreated | kDestroyed;
+  std::size_t touched_count = 0;
+  for (std::size_t id = 0; id < ids; ++id) {
+    const std::uint32_t s = slot_[id];
+    const std::vector<Entry>& list = (s & kOversizedBit) != 0 ? oversized_ : entries_;
+    if (s != kNoSlot && list[s & ~kOversizedBit].id != id) {
+      in.fail("a broadphase slot naming another proxy's entry: proxy " + std::to_string(id));
+    }
+    const std::uint8_t touch = touched_[id];
+    if ((touch & ~kAnyTouch) != 0) in.fail("a broadphase proxy touched in an unknown way");
+    touched_count += touch != 0 ? 1 : 0;
+    const bool alive = store_.alive(static_cast<ProxyId>(id));
+    const bool created = (touch & kCreated) != 0, destroyed = (touch & kDestroyed) != 0;
+    if (alive ? destroyed : (touch != 0 && !destroyed)) {
+      in.fail("a broadphase proxy touched unlike its life: proxy " + std::to_string(id));
+    }
+    if (!built_) continue;
+    const bool listed = alive ? !created : destroyed && !created;
+    if ((s != kNoSlot) != listed) {
+      in.fail("a broadphase proxy " + std::string(listed ? "missing from" : "left in") +
+              " the sorted boxes: proxy " + std::to_string(id));
+    }
+  }
+  std::vector<std::uint8_t> seen(ids, 0);
+  for (const ProxyId id : touched_ids_) {
+    if (touched_[id] == 0 || seen[id]++ != 0) in.fail("a broadphase touched list unlike its flags");
+  }
+  if (touched_ids_.size() != touched_count) in.fail("a broadphase touched list unlike its flags");
 }
 
 void SweepAndPrune::save(SaveArchive& archive) const {

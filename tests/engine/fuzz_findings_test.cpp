@@ -363,7 +363,8 @@ TEST(FuzzFindings, TheSnapshotRestoreCorpusIsRefusedOrStepsFinite) {
                                                   "body-reaching-beyond-the-world",
                                                   "a-hundred-million-substeps",
                                                   "a-billion-broadphase-bands",
-                                                  "a-proxy-count-beyond-its-proxies"};
+                                                  "a-proxy-count-beyond-its-proxies",
+                                                  "a-live-proxy-touched-as-destroyed"};
   int refused = 0, stepped = 0;
   for (const auto& entry : std::filesystem::directory_iterator(corpus)) {
     SCOPED_TRACE(entry.path().filename().string());

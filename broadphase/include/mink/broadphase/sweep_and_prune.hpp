@@ -61,6 +61,8 @@ class SweepAndPrune final : public Broadphase {
  private:
   template <typename Archive>
   void fields(Archive& archive);
+  /// Refuses, through `in`, a loaded state whose slots, entries and touched proxies disagree.
+  void check_loaded_slots(ByteReader& in) const;
   /// A box in (sweep axis, band axis) coordinates, with its sort key.
   struct Entry {
     std::uint64_t key;
