@@ -728,15 +728,16 @@ void SweepAndPrune::fields(Archive& archive) {
     for (const ProxyId id : touched_ids_) {
       if (id >= ids) archive.in.fail("a touched proxy that does not exist");
     }
-    check_loaded_slots(archive.in);
+    check_loaded_state(archive.in);
   }
 }
 
-// What update_structure() and remove_entry() take on trust, checked for a loaded state: each
-// proxy's slot names the entry that holds it, the touched list holds each touched proxy once,
-// and a proxy has an entry exactly when the next update expects one (one created since has
-// none yet; one destroyed since still has its own).
-void SweepAndPrune::check_loaded_slots(ByteReader& in) const {
+// What the updates and sweeps take on trust, checked for a loaded state: each proxy's slot
+// names the entry that holds it, the touched list holds each touched proxy once, a proxy has an
+// entry exactly when the next update expects one (one created since has none yet; one
+// destroyed since still has its own), the band starts are the entries' own, and no search
+// cursor carries a stamp the next sweep could take for its own.
+void SweepAndPrune::check_loaded_state(ByteReader& in) const {
   const std::size_t ids = store_.id_bound();
   if (slot_.size() != ids || committed_.size() != ids || touched_.size() != ids) {
     in.fail("broadphase per-proxy arrays not one entry per proxy");
@@ -783,6 +784,26 @@ void SweepAndPrune::check_loaded_slots(ByteReader& in) const {
     if (touched_[id] == 0 || seen[id]++ != 0) in.fail("a broadphase touched list unlike its flags");
   }
   if (touched_ids_.size() != touched_count) in.fail("a broadphase touched list unlike its flags");
+
+  if (!entries_.empty() && band_begin_.size() != std::size_t{band_count_} + 1) {
+    in.fail("broadphase entries without their band starts");
+  }
+  for (std::size_t band = 0; band + 1 < band_begin_.size(); ++band) {
+    const auto first = std::lower_bound(entries_.begin(), entries_.end(),
+                                        make_key(static_cast<std::uint32_t>(band), 0), key_below);
+    if (band_begin_[band] != static_cast<std::size_t>(first - entries_.begin())) {
+      in.fail("a broadphase band start that is not its band's: band " + std::to_string(band));
+    }
+  }
+  if (!band_begin_.empty() && band_begin_.back() != entries_.size()) {
+    in.fail("broadphase band starts that do not end at the entries' end");
+  }
+  if (cursor_stamp_ == std::numeric_limits<std::uint64_t>::max()) {
+    in.fail("a broadphase cursor stamp at its largest value");
+  }
+  for (const Cursor& cursor : cursors_) {
+    if (cursor.stamp > cursor_stamp_) in.fail("a broadphase cursor stamped ahead of its sweeps");
+  }
 }
 
 void SweepAndPrune::save(SaveArchive& archive) const {

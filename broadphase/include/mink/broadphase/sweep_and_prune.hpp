@@ -61,8 +61,9 @@ class SweepAndPrune final : public Broadphase {
  private:
   template <typename Archive>
   void fields(Archive& archive);
-  /// Refuses, through `in`, a loaded state whose slots, entries and touched proxies disagree.
-  void check_loaded_slots(ByteReader& in) const;
+  /// Refuses, through `in`, a loaded state whose slots, entries, touched proxies, band starts
+  /// or search cursors disagree.
+  void check_loaded_state(ByteReader& in) const;
   /// A box in (sweep axis, band axis) coordinates, with its sort key.
   struct Entry {
     std::uint64_t key;
