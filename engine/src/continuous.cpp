@@ -73,11 +73,8 @@ Aabb merge(const Aabb& a, const Aabb& b) {
 
 namespace {
 
-// A small circle about the shape's middle, half as wide as the shape is thin: where a shape
-// already near something at the start of a step must not go, whatever the contact did.
-std::optional<Circle> middle_circle(const ShapeGeometry& geometry) {
-  const Real thin = detail::shape_min_extent(geometry);
-  if (!(thin > 0)) return std::nullopt;
+// A shape's middle: the point a chain segment tells its front from its back by.
+Vec2 shape_middle(const ShapeGeometry& geometry) {
   struct Middle {
     Vec2 operator()(const Circle& c) const { return c.center; }
     Vec2 operator()(const Capsule& c) const { return 0.5 * (c.center1 + c.center2); }
@@ -85,7 +82,93 @@ std::optional<Circle> middle_circle(const ShapeGeometry& geometry) {
     Vec2 operator()(const ChainSegment& s) const { return (*this)(s.segment); }
     Vec2 operator()(const RoundedPolygon& p) const { return p.hull.centroid(); }
   };
-  return Circle{std::visit(Middle{}, geometry), 0.5 * thin};
+  return std::visit(Middle{}, geometry);
+}
+
+// A small circle about the shape's middle, half as wide as the shape is thin: where a shape
+// already near something at the start of a step must not go, whatever the contact did.
+std::optional<Circle> middle_circle(const ShapeGeometry& geometry) {
+  const Real thin = detail::shape_min_extent(geometry);
+  if (!(thin > 0)) return std::nullopt;
+  return Circle{shape_middle(geometry), 0.5 * thin};
+}
+
+// The fraction of the step at which `middle` (a point in the moving body's frame), starting in
+// front of the chain segment `chain`, would first lie over the segment closer to its line than
+// half its start distance or `tolerance`; 1 when it never does. A shape whose middle gets
+// behind a chain segment passes through it (the segment is one-sided), so a body pressed into
+// a chain so deep that its middle circle already overlaps it is still kept from crossing.
+Real middle_crossing(const Vec2& middle, const Sweep& moving_sweep, const SweepEnds& ends,
+                     const ChainSegment& chain, const Sweep& chain_sweep, const Pose& chain_start,
+                     bool chain_still, Real tolerance) {
+  // At fraction t: the middle's signed distance in front of the segment's line less the
+  // target, and how far it lies past the segment's first end and short of its second (along
+  // the segment, in units of its squared length). The middle is too close where all three
+  // are at most, at least and at least zero.
+  struct Place {
+    Real closer, past_first, short_of_second;
+  };
+  Real target = 0;
+  const Pose& still_wall = chain_start;
+  const auto place_at = [&](const Pose& moving, const Pose& wall) {
+    const Vec2 a = wall.apply(chain.segment.point1);
+    const Vec2 e = wall.apply(chain.segment.point2) - a;
+    const Vec2 p = moving.apply(middle) - a;
+    const Real along = p.dot(e);
+    // Along the right perpendicular, the side the segment faces.
+    const Real in_front = (p.x() * e.y() - p.y() * e.x()) / e.norm();
+    return Place{in_front - target, along, e.squaredNorm() - along};
+  };
+  const auto place = [&](Real t) {
+    return place_at(moving_sweep.pose_at(t), chain_still ? still_wall : chain_sweep.pose_at(t));
+  };
+  const auto too_close = [](const Place& p) {
+    return p.closer <= 0 && p.past_first >= 0 && p.short_of_second >= 0;
+  };
+  const Real start = place_at(ends.start, still_wall).closer;
+  if (!(start > 0)) return 1;
+  target = std::min(tolerance, 0.5 * start);
+  // Beside a still chain the middle strays from the straight line between its ends by at
+  // most its turn's dip (see clear_of_a_face): ends far enough in front keep it in front.
+  if (chain_still) {
+    const Real stray = ends.dip * (middle - moving_sweep.local_center).norm();
+    if (std::min(start, place_at(ends.end, still_wall).closer + target) - stray > target) return 1;
+  }
+  // Each of the three is nearly linear in t (the middle's path bends only by the body's turn):
+  // between samples, where none changes sign, whether the middle is too close does not
+  // change either; where one does, bisection finds the place.
+  constexpr int kSamples = 8;
+  Place previous = place(0);
+  Real before = 0;
+  for (int k = 1; k <= kSamples; ++k) {
+    const Real t = static_cast<Real>(k) / kSamples;
+    const Place next = place(t);
+    const auto flips = [](Real x, Real y) { return (x > 0) != (y > 0) || (x < 0) != (y < 0); };
+    if (flips(previous.closer, next.closer) || flips(previous.past_first, next.past_first) ||
+        flips(previous.short_of_second, next.short_of_second) || too_close(next)) {
+      // The pieces between the sign changes, in order: the first one too close ends the
+      // motion at its start.
+      Real from = before;
+      for (int piece = 0; piece < 3 && from < t; ++piece) {
+        // The end of the piece starting at `from`: the first sign change after it.
+        const Place at_from = place(from);
+        Real lo = from, hi = t;
+        for (int i = 0; i < 24; ++i) {
+          const Real mid = 0.5 * (lo + hi);
+          const Place m = place(mid);
+          const bool same = !flips(at_from.closer, m.closer) &&
+                            !flips(at_from.past_first, m.past_first) &&
+                            !flips(at_from.short_of_second, m.short_of_second);
+          (same ? lo : hi) = mid;
+        }
+        if (too_close(place(hi))) return lo;
+        from = hi;
+      }
+    }
+    previous = next;
+    before = t;
+  }
+  return 1;
 }
 
 // Calls face(normal, offset) for each face of a shape standing still at `pose`: the shape lies
@@ -201,6 +284,12 @@ void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
     const ShapeDistance start =
         shape_distance(f.geometry, fast.local_ends.start, o.geometry, other_start);
     const bool near = start.overlap || start.distance < 4 * def.linear_slop;
+    const auto* chain = std::get_if<ChainSegment>(&o.geometry);
+    if (near && chain != nullptr) {
+      const Real crossing = middle_crossing(shape_middle(f.geometry), fast_sweep, fast.local_ends,
+                                            *chain, other_sweep, other_start, still, tolerance);
+      if (crossing > 0 && crossing < fast.fraction) fast.fraction = crossing;
+    }
     ShapeGeometry middle;
     if (near) {
       const std::optional<Circle> circle = middle_circle(f.geometry);
