@@ -3,9 +3,11 @@
 #include "snapshot_checks.hpp"
 
 #include <cmath>
+#include <iterator>
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "checks.hpp"
@@ -55,6 +57,10 @@ void check_indices(const WorldState& w, ByteReader& in) {
         c.proxy_a == null_proxy || c.proxy_b == null_proxy) {
       in.fail("a contact whose proxies are not its live shapes' own");
     }
+    // The narrowphase takes a contact flagged as between sharp polygons to hold two hulls.
+    const bool sharp = a.type == ShapeType::polygon && b.type == ShapeType::polygon &&
+                       shape_radius(a.geometry) == 0 && shape_radius(b.geometry) == 0;
+    if (c.sharp_polygons != sharp) in.fail("a contact flagged unlike its shapes' kinds");
   }
   for (const Joint& j : w.joints) {
     if (j.body_count < 2 || j.body_count > 4) in.fail("a joint with a bad body count");
@@ -204,6 +210,11 @@ void check_geometry(const ShapeGeometry& geometry, const std::string& what, Byte
 void check_shape(const Shape& shape, const std::string& what, ByteReader& in) {
   if (!all_finite(shape)) in.fail(what + " holds a non-finite value");
   if (shape.type > ShapeType::chain) in.fail(what + " has no shape type");
+  // The type decides how contacts read the geometry.
+  static constexpr ShapeType kTypeOf[] = {ShapeType::circle, ShapeType::capsule, ShapeType::segment,
+                                          ShapeType::chain, ShapeType::polygon};
+  static_assert(std::variant_size_v<ShapeGeometry> == std::size(kTypeOf));
+  if (kTypeOf[shape.geometry.index()] != shape.type) in.fail(what + " is not of its type");
   if (shape.algorithm > HullAlgorithm::monotone_chain) in.fail(what + " has no hull algorithm");
   if (!(shape.density >= 0 && shape.friction >= 0 && shape.restitution >= 0)) {
     in.fail(what + " has a negative density, friction or restitution");

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "narrowphase_test_support.hpp"
 
 namespace {
@@ -33,6 +35,19 @@ TEST(Support, SearchesAgreeWithTheLinearScanOnRandomHulls) {
         ASSERT_EQ(hull.vertices()[mink::support_index(hull, d)].dot(d), best);
       }
     }
+  }
+}
+
+// A NaN direction matches no vertex: every search still names one of the hull's, rather than
+// an index past the end (the single-block scan returned 16 of 8, the long scan ran off the
+// end; a snapshot restore harness input whose state stepped into NaN found the first).
+TEST(Support, ANanDirectionStillNamesAVertex) {
+  std::mt19937_64 rng(11);
+  const Vec2 nan_direction(std::numeric_limits<Real>::quiet_NaN(), 1);
+  for (std::size_t n : {3u, 5u, 8u, 17u, 64u, 65u, 300u}) {
+    const PreparedHull hull = random_hull(rng, n);
+    EXPECT_LT(support_index_linear(hull, nan_direction), hull.size()) << n;
+    EXPECT_LT(mink::support_index(hull, nan_direction), hull.size()) << n;
   }
 }
 

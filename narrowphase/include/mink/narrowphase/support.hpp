@@ -48,6 +48,8 @@ inline std::size_t support_block(const Real* xs, const Real* ys, const Vec2& dir
   const __m128i high = _mm_packs_epi32(_mm_castpd_si128(_mm_cmpeq_pd(v2, top)),
                                        _mm_castpd_si128(_mm_cmpeq_pd(v3, top)));
   const int reached = _mm_movemask_epi8(_mm_packs_epi16(low, high));
+  // A NaN direction or coordinate matches no vertex: the first one then, never past the block.
+  if (reached == 0) return 0;
   return static_cast<std::size_t>(std::countr_zero(static_cast<unsigned>(reached))) / 2;
 }
 
@@ -104,12 +106,13 @@ inline std::size_t support_index_linear(const PreparedHull& hull, const Vec2& di
     for (std::size_t i = 0; i < n; i += 2) {
       reached |= static_cast<std::uint64_t>(_mm_movemask_pd(_mm_cmpeq_pd(values(i), best))) << i;
     }
-    return static_cast<std::size_t>(std::countr_zero(reached));
+    return reached == 0 ? 0 : static_cast<std::size_t>(std::countr_zero(reached));
   }
-  for (std::size_t i = 0;; i += 2) {
+  for (std::size_t i = 0; i < n; i += 2) {
     const int mask = _mm_movemask_pd(_mm_cmpeq_pd(values(i), best));
     if (mask != 0) return i + ((mask & 1) != 0 ? 0 : 1);
   }
+  return 0;  // a NaN matches no vertex (as in support_block)
 #else
   const Real dx = direction.x();
   const Real dy = direction.y();
