@@ -95,10 +95,10 @@ std::optional<Circle> middle_circle(const ShapeGeometry& geometry) {
 
 // The fraction of the step at which `middle` (a point in the moving body's frame), starting in
 // front of the chain segment `chain`, would first lie over the segment closer to its line than
-// `tolerance`, or than half its start distance if that is less; 1 when it never does. A shape whose
-// middle gets behind a chain segment passes through it (the segment is one-sided), so a body
-// pressed into a chain so deep that its middle circle already overlaps it is still kept from
-// crossing.
+// `tolerance`, or than half its start distance if that is less; 1 when it never does. A shape
+// whose middle gets behind a chain segment passes through it (the segment is one-sided), so a
+// body pressed into a chain so deep that its middle circle already overlaps it is still kept
+// from crossing.
 Real middle_crossing(const Vec2& middle, const Sweep& moving_sweep, const SweepEnds& ends,
                      const ChainSegment& chain, const Sweep& chain_sweep, const Pose& chain_start,
                      bool chain_still, Real tolerance) {
