@@ -120,7 +120,7 @@ class CallSequence {
     dynamic.type = mink::BodyType::dynamic;
     const BodyId other_b = other_.create_body(dynamic);
     foreign_joint_ =
-        other_.create_joint(mink::revolute_joint_at(other_, foreign_body_, other_b, {}));
+        other_.create_joint(mink::revolute_joint_at(other_, foreign_body_, other_b, Vec2(0, 0)));
   }
 
   // The digest after every step, for the comparison across worker counts.
