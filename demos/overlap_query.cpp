@@ -70,6 +70,14 @@ OverlapAnswer answer_overlap(std::span<const Vec2> a_points, std::span<const Vec
     answer.distance = d.distance;
     answer.normal = d.normal;
   }
+  // Hulls 1e154 apart or more have a distance (or a depth) beyond a double: say so rather than
+  // print an infinity, which is no JSON number.
+  if (!std::isfinite(answer.distance) || !std::isfinite(answer.depth) ||
+      !answer.normal.allFinite()) {
+    throw InvalidArgumentError(std::string("the hulls' ") +
+                               (answer.overlap ? "penetration depth" : "distance") +
+                               " is too large for a double");
+  }
   Real magnitude = 0;
   for (const auto* hull : {&a, &b}) {
     for (const Vec2& v : hull->vertices()) {

@@ -190,6 +190,18 @@ TEST(OverlapCommand, ANumberTooLargeForADoubleIsAnErrorLine) {
   EXPECT_EQ(out[1]["distance"].get<Real>(), 2);
 }
 
+// Found by the overlap_line fuzz harness: hulls 1e302 m apart have a distance beyond a double,
+// and the line said "distance": inf, which is no JSON.
+TEST(OverlapCommand, ADistanceTooLargeForADoubleIsAnErrorLine) {
+  const CliResult r = run_cli(
+      {"overlap", "-"}, "{\"a\": [[0,0],[1,0],[0,1]], \"b\": [[1e302,0],[2e302,0],[1e302,1]]}\n");
+  const auto out = parse_lines(r.out);
+  EXPECT_EQ(r.code, 2);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0]["error"].get<std::string>(),
+            "line 1: the hulls' distance is too large for a double");
+}
+
 TEST(OverlapCommand, BadLinesAreReportedAndTheRestAnswered) {
   const CliResult r = run_cli({"overlap", "-"},
                               "{\"a\": [[0,0],[1,0],[0,1]], \"b\": [[3,0],[4,0],[3,1]]}\n"
