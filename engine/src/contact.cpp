@@ -201,9 +201,7 @@ void WorldState::update_pairs() {
     c.restitution = detail::mix_restitution(shape_a.restitution, shape_b.restitution);
     c.events = shape_a.contact_events && shape_b.contact_events;
     c.hit_events = shape_a.hit_events || shape_b.hit_events;
-    c.sharp_polygons = shape_a.type == ShapeType::polygon && shape_b.type == ShapeType::polygon &&
-                       detail::shape_radius(shape_a.geometry) == 0 &&
-                       detail::shape_radius(shape_b.geometry) == 0;
+    c.sharp_polygons = detail::sharp_polygon_pair(shape_a, shape_b);
     c.a_fixed = bodies[c.body_a].type != BodyType::dynamic;
     c.b_fixed = bodies[c.body_b].type != BodyType::dynamic;
     const auto index = static_cast<std::uint32_t>(contacts.size());

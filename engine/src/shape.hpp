@@ -93,4 +93,10 @@ Real shape_min_extent(const ShapeGeometry& geometry);
 // vertex from its centroid. Unlike its box, it does not grow as the shape turns.
 Real broadphase_size(const ShapeGeometry& geometry);
 
+// Two polygons without rounding: their contact is collided as two hulls (collide_hulls).
+inline bool sharp_polygon_pair(const Shape& a, const Shape& b) {
+  return a.type == ShapeType::polygon && b.type == ShapeType::polygon &&
+         shape_radius(a.geometry) == 0 && shape_radius(b.geometry) == 0;
+}
+
 }  // namespace mink::detail

@@ -58,9 +58,9 @@ void check_indices(const WorldState& w, ByteReader& in) {
       in.fail("a contact whose proxies are not its live shapes' own");
     }
     // The narrowphase takes a contact flagged as between sharp polygons to hold two hulls.
-    const bool sharp = a.type == ShapeType::polygon && b.type == ShapeType::polygon &&
-                       shape_radius(a.geometry) == 0 && shape_radius(b.geometry) == 0;
-    if (c.sharp_polygons != sharp) in.fail("a contact flagged unlike its shapes' kinds");
+    if (c.sharp_polygons != sharp_polygon_pair(a, b)) {
+      in.fail("a contact flagged unlike its shapes' kinds");
+    }
   }
   for (const Joint& j : w.joints) {
     if (j.body_count < 2 || j.body_count > 4) in.fail("a joint with a bad body count");
