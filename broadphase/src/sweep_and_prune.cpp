@@ -197,23 +197,27 @@ void SweepAndPrune::resume_sweep(const Entry& q, Visit&& visit) {
 }
 
 void SweepAndPrune::find_band_starts() {
-  band_begin_.resize(std::size_t{band_count_} + 1);
+  band_starts(band_begin_);
+}
+
+void SweepAndPrune::band_starts(std::vector<std::uint32_t>& band_begin) const {
+  band_begin.resize(std::size_t{band_count_} + 1);
   const std::size_t n = entries_.size();
   if (std::size_t{band_count_} * 16 > n) {
     // Many bands for few entries: one pass.
     std::size_t i = 0;
     for (std::uint32_t band = 0; band < band_count_; ++band) {
       while (i < n && (entries_[i].key >> 32) < band) ++i;
-      band_begin_[band] = static_cast<std::uint32_t>(i);
+      band_begin[band] = static_cast<std::uint32_t>(i);
     }
   } else {
     for (std::uint32_t band = 0; band < band_count_; ++band) {
-      band_begin_[band] = static_cast<std::uint32_t>(
+      band_begin[band] = static_cast<std::uint32_t>(
           std::lower_bound(entries_.begin(), entries_.end(), make_key(band, 0), key_below) -
           entries_.begin());
     }
   }
-  band_begin_[band_count_] = static_cast<std::uint32_t>(n);
+  band_begin[band_count_] = static_cast<std::uint32_t>(n);
 }
 
 void SweepAndPrune::update_pairs(PairEvents& events) {
@@ -785,18 +789,11 @@ void SweepAndPrune::check_loaded_state(ByteReader& in) const {
   }
   if (touched_ids_.size() != touched_count) in.fail("a broadphase touched list unlike its flags");
 
-  if (!entries_.empty() && band_begin_.size() != std::size_t{band_count_} + 1) {
-    in.fail("broadphase entries without their band starts");
-  }
-  for (std::size_t band = 0; band + 1 < band_begin_.size(); ++band) {
-    const auto first = std::lower_bound(entries_.begin(), entries_.end(),
-                                        make_key(static_cast<std::uint32_t>(band), 0), key_below);
-    if (band_begin_[band] != static_cast<std::size_t>(first - entries_.begin())) {
-      in.fail("a broadphase band start that is not its band's: band " + std::to_string(band));
-    }
-  }
-  if (!band_begin_.empty() && band_begin_.back() != entries_.size()) {
-    in.fail("broadphase band starts that do not end at the entries' end");
+  // (A broadphase never built has neither.)
+  if (!entries_.empty() || !band_begin_.empty()) {
+    std::vector<std::uint32_t> own;
+    band_starts(own);
+    if (band_begin_ != own) in.fail("broadphase band starts that are not the entries' own");
   }
   if (cursor_stamp_ == std::numeric_limits<std::uint64_t>::max()) {
     in.fail("a broadphase cursor stamp at its largest value");

@@ -119,6 +119,8 @@ class SweepAndPrune final : public Broadphase {
   /// Also refreshes band_begin_, which every change of entries_ invalidates.
   void recompute_slots();
   void find_band_starts();
+  /// The first index in entries_ of each band, then n: what band_begin_ holds.
+  void band_starts(std::vector<std::uint32_t>& band_begin) const;
 
   ProxyStore store_;
   std::vector<ProxyPair> pairs_;  ///< the pair set; begun pairs appended, ended ones compacted away
