@@ -48,9 +48,10 @@ inline std::size_t support_block(const Real* xs, const Real* ys, const Vec2& dir
   const __m128i high = _mm_packs_epi32(_mm_castpd_si128(_mm_cmpeq_pd(v2, top)),
                                        _mm_castpd_si128(_mm_cmpeq_pd(v3, top)));
   const int reached = _mm_movemask_epi8(_mm_packs_epi16(low, high));
-  // A NaN direction or coordinate matches no vertex: the first one then, never past the block.
-  if (reached == 0) return 0;
-  return static_cast<std::size_t>(std::countr_zero(static_cast<unsigned>(reached))) / 2;
+  // A NaN direction or coordinate matches no vertex: the bit past the block then gives 8, which
+  // the mask turns into the first vertex (no branch on the search's hot path).
+  const unsigned bits = static_cast<unsigned>(reached) | (1u << 16);
+  return (static_cast<std::size_t>(std::countr_zero(bits)) / 2) & (kSupportBlock - 1);
 }
 
 /// A pose broadcast to both lanes, to map x/y arrays two points at a time. The same operations
