@@ -285,14 +285,13 @@ void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
     const ShapeDistance start =
         shape_distance(f.geometry, fast.local_ends.start, o.geometry, other_start);
     const bool near = start.overlap || start.distance < 4 * def.linear_slop;
-    const auto* chain = std::get_if<ChainSegment>(&o.geometry);
-    if (near && chain != nullptr) {
-      const Real crossing = middle_crossing(shape_middle(f.geometry), fast_sweep, fast.local_ends,
-                                            *chain, other_sweep, other_start, still, tolerance);
-      if (crossing > 0 && crossing < fast.fraction) fast.fraction = crossing;
-    }
     ShapeGeometry middle;
     if (near) {
+      if (const auto* chain = std::get_if<ChainSegment>(&o.geometry)) {
+        const Real crossing = middle_crossing(shape_middle(f.geometry), fast_sweep, fast.local_ends,
+                                              *chain, other_sweep, other_start, still, tolerance);
+        if (crossing > 0 && crossing < fast.fraction) fast.fraction = crossing;
+      }
       const std::optional<Circle> circle = middle_circle(f.geometry);
       if (!circle) continue;
       middle = *circle;

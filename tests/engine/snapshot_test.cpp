@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -15,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "contact.hpp"  // the engine's friction mixing rule
 #include "mink/byte_stream.hpp"
 #include "mink/engine/scene.hpp"
 #include "mink/engine/scene_schedule.hpp"
@@ -393,7 +393,7 @@ TEST(Snapshot, AContactThatMisnamesItsProxiesOrBodiesIsRefused) {
   const std::uint64_t unchanged = world.state_hash();
   // The contact's record: its friction (the shapes' mixed), restitution, shape and proxy
   // indices, four flags, approach speed and point, colour, then its fixed flags.
-  const Real friction = std::sqrt(kGroundFriction * ShapeDef{}.friction);
+  const Real friction = detail::mix_friction(kGroundFriction, ShapeDef{}.friction);
   std::uint8_t pattern[sizeof(Real)];
   std::memcpy(pattern, &friction, sizeof friction);
   const auto at = std::search(snapshot.begin() + 36, snapshot.end(), pattern, pattern + 8);
