@@ -233,7 +233,7 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
   // the chains' direct solve first in each solve, the overflow one at a time.
   const auto joint_stages = [&](StageKind kind) {
     if (!with_joints) return;
-    const std::vector<std::uint32_t>& begin = joints->color_begin();
+    const std::vector<std::uint32_t>& begin = joints->unit_begin();
     for (std::uint32_t c = 0; c <= kColorCount; ++c) {
       const std::uint32_t first = begin[c], last = begin[c + 1];
       if (last == first) continue;

@@ -272,6 +272,7 @@ void WorldState::set_joint_bodies(std::uint32_t index) {
   if (!joint.alive) return;
   ends.body = joint.body;
   ends.count = static_cast<std::uint32_t>(joint.body_count);
+  ends.color = joint.color;
 }
 
 void WorldState::recolor_joint(std::uint32_t index) {
@@ -282,11 +283,12 @@ void WorldState::recolor_joint(std::uint32_t index) {
   if (joint.body_count == 4) {
     // Four bodies do not fit the graph's pairs: a gear is solved one at a time.
     joint.color = detail::kOverflowColor;
-    return;
+  } else {
+    joint.a_fixed = bodies[joint.body[0]].type != BodyType::dynamic;
+    joint.b_fixed = bodies[joint.body[1]].type != BodyType::dynamic;
+    joint.color = graph.add(joint.body[0], joint.a_fixed, joint.body[1], joint.b_fixed);
   }
-  joint.a_fixed = bodies[joint.body[0]].type != BodyType::dynamic;
-  joint.b_fixed = bodies[joint.body[1]].type != BodyType::dynamic;
-  joint.color = graph.add(joint.body[0], joint.a_fixed, joint.body[1], joint.b_fixed);
+  set_joint_bodies(index);
 }
 
 bool WorldState::joint_prevents_contact(std::uint32_t body_a, std::uint32_t body_b) const {

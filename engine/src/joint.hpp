@@ -27,11 +27,13 @@ struct Joint {
   JointReaction reaction;  // of the last step it was solved in
 };
 
-// A joint's bodies as the island pass reads them: a compact copy of Joint::body and
-// body_count per joint slot (count 0 while the slot is free).
+// A joint's bodies as the island pass and the step's gathering of joints read them: a
+// compact copy of Joint::body, body_count and color per joint slot (count 0 while the slot is
+// free), so those passes stay off the kilobyte records.
 struct JointBodies {
   std::array<std::uint32_t, 4> body{};
   std::uint32_t count = 0;
+  std::uint8_t color = kNoColor;
 };
 
 // A kind's end-of-step bookkeeping, free coordinate and its rate: kinds without one (a weld,

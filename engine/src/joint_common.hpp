@@ -121,6 +121,9 @@ inline void apply_pair(SolverBody& a, SolverBody& b, const Frame& f, const Vec2&
 // An angle in (-pi, pi].
 inline Real wrap_angle(Real a) {
   constexpr Real two_pi = 2 * std::numbers::pi;
+  // Most angles are already in range (a joint turns little in a step), where the remainder
+  // would return them unchanged.
+  if (a > -std::numbers::pi && a <= std::numbers::pi) return a;
   a = std::remainder(a, two_pi);
   return a <= -std::numbers::pi ? a + two_pi : a;
 }

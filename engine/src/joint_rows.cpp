@@ -54,12 +54,30 @@ PointRowFrame point_row_frame(const JointFrame& frame) {
 }
 
 template <typename Frame>
+PinRow pin_row(const Frame& frame, const Vec2& impulse) {
+  const auto f = [](Real x) { return static_cast<SolverReal>(x); };
+  return {frame.bodies[0].solver,
+          frame.bodies[1].solver,
+          f(frame.bodies[0].inv_mass),
+          f(frame.bodies[0].inv_inertia),
+          f(frame.bodies[1].inv_mass),
+          f(frame.bodies[1].inv_inertia),
+          f(frame.anchor_a.x()),
+          f(frame.anchor_a.y()),
+          f(frame.anchor_b.x()),
+          f(frame.anchor_b.y()),
+          f(frame.delta_center.x()),
+          f(frame.delta_center.y()),
+          f(frame.soft.bias_rate),
+          f(frame.soft.mass_scale),
+          f(frame.soft.impulse_scale),
+          f(impulse.x()),
+          f(impulse.y())};
+}
+
+template <typename Frame>
 void warm_start_point(SolverBody* bodies, const Frame& frame, const Vec2& linear, Real angular) {
-  SolverBody& a = bodies[frame.bodies[0].solver];
-  SolverBody& b = bodies[frame.bodies[1].solver];
-  const Vec2 ra = delta_rotation(a).apply(frame.anchor_a);
-  const Vec2 rb = delta_rotation(b).apply(frame.anchor_b);
-  apply_pair(a, b, frame, ra, rb, linear, angular);
+  warm_start_pin(bodies, pin_row(frame, linear), static_cast<SolverReal>(angular));
 }
 
 template <typename Frame>
@@ -96,26 +114,15 @@ Vec2 point_impulse(const Frame& frame, const CurrentAnchors& c, const Vec2& dv) 
 
 template <typename Frame>
 void solve_point(SolverBody& a, SolverBody& b, const Frame& frame, bool use_bias, Vec2& impulse) {
-  const CurrentAnchors c = current_anchors(frame, a, b);
-  Vec2 bias{0, 0};
-  Real mass_scale = 1, impulse_scale = 0;
-  if (use_bias) {
-    bias = frame.soft.bias_rate * c.separation;
-    mass_scale = frame.soft.mass_scale;
-    impulse_scale = frame.soft.impulse_scale;
-  }
-  const Vec2 solved = point_impulse(frame, c, point_velocity(c, a, b) + bias);
-  const Vec2 p = -mass_scale * solved - impulse_scale * impulse;
-  impulse += p;
-  apply_pair(a, b, frame, c.ra, c.rb, p, 0);
+  PinRow row = pin_row(frame, impulse);
+  pin_solve(a, b, row, use_bias);
+  impulse = Vec2(row.impulse_x, row.impulse_y);
 }
 
 template CurrentAnchors current_anchors(const JointFrame&, const SolverBody&, const SolverBody&);
-template CurrentAnchors current_anchors(const PinRow&, const SolverBody&, const SolverBody&);
 template void warm_start_point(SolverBody*, const JointFrame&, const Vec2&, Real);
-template void warm_start_point(SolverBody*, const PinRow&, const Vec2&, Real);
+template PinRow pin_row(const JointFrame&, const Vec2&);
 template void solve_point(SolverBody&, SolverBody&, const JointFrame&, bool, Vec2&);
-template void solve_point(SolverBody&, SolverBody&, const PinRow&, bool, Vec2&);
 template CurrentAnchors current_anchors(const RevoluteRowFrame&, const SolverBody&,
                                         const SolverBody&);
 template void warm_start_point(SolverBody*, const RevoluteRowFrame&, const Vec2&, Real);

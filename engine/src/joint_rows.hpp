@@ -8,6 +8,7 @@
 // relative angle; axial rows on a translation along a world axis.
 
 #include "joint_common.hpp"
+#include "pin_rows.hpp"
 
 namespace mink::detail {
 
@@ -37,12 +38,6 @@ struct PointRowFrame {
 };
 PointRowFrame point_row_frame(const JointFrame& frame);
 
-// A revolute joint that is only its point row (no spring, motor or limit, not solved in a
-// direct chain), with its impulse: 136 bytes.
-struct PinRow : PointRowFrame {
-  Vec2 impulse{0, 0};
-};
-
 // What a revolute joint's rows read of its frame.
 struct RevoluteRowFrame : PointRowFrame {
   Real h = 0, inv_h = 0;
@@ -53,8 +48,8 @@ struct RevoluteRowFrame : PointRowFrame {
 struct CurrentAnchors {
   Vec2 ra{0, 0}, rb{0, 0}, separation{0, 0};
 };
-// `Frame`, here and below: a JointFrame, or a row's frame (PinRow, RevoluteRowFrame) where
-// it holds what the function reads.
+// `Frame`, here and below: a JointFrame, or a row's frame (RevoluteRowFrame) where it holds
+// what the function reads.
 template <typename Frame>
 CurrentAnchors current_anchors(const Frame& frame, const SolverBody& a, const SolverBody& b);
 
@@ -63,7 +58,12 @@ CurrentAnchors current_anchors(const Frame& frame, const SolverBody& a, const So
 template <typename Frame>
 void warm_start_point(SolverBody* bodies, const Frame& frame, const Vec2& linear, Real angular);
 
-// B's anchor held on A's: a 2x2 block row. `impulse` accumulates.
+// The point row in the solver's precision (pin_rows.hpp), with impulse `impulse`.
+template <typename Frame>
+PinRow pin_row(const Frame& frame, const Vec2& impulse);
+
+// B's anchor held on A's: a 2x2 block row, in the solver's precision (pin_rows.hpp).
+// `impulse` accumulates.
 template <typename Frame>
 void solve_point(SolverBody& a, SolverBody& b, const Frame& frame, bool use_bias, Vec2& impulse);
 

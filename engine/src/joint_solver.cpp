@@ -1,8 +1,8 @@
 // The joints' part of a step. After the contacts are prepared: the joints of moving bodies,
-// in colour order then slot order, get their frames for the step. In every substep stage the
-// solver runs them before the contacts (warm start, solve with bias, relax), revolute joints
-// from their rows; after the solve each joint takes back its row's impulses, records the force
-// it applied, reports a break, and settles its coordinate.
+// in colour order then slot order, get their frames for the step (a pin only its pin row). In
+// every substep stage the solver runs them before the contacts (warm start, solve with bias,
+// relax), revolute joints from their rows; after the solve each joint takes back its row's
+// impulses, records the force it applied, reports a break, and settles its coordinate.
 
 #include <algorithm>
 #include <bit>
@@ -30,15 +30,22 @@ void JointStages::gather(std::uint32_t position, Joint& joint) {
     kind_[position] = RowKind::revolute;
     return;
   }
-  PinRow& row = pins_[position];
-  static_cast<PointRowFrame&>(row) = point_row_frame(frame);
-  row.impulse = revolute->linear_impulse;
+  pins_[position] = pin_row(frame, revolute->linear_impulse);
+  kind_[position] = RowKind::pin;
+}
+
+void JointStages::gather_pin(std::uint32_t position, const JointFrame& frame,
+                             const RevoluteJoint& joint) {
+  ends_[position] = {{frame.bodies[0], frame.bodies[1]}, true};
+  pins_[position] = pin_row(frame, joint.linear_impulse);
   kind_[position] = RowKind::pin;
 }
 
 std::size_t JointStages::build_chains(bool enabled) {
   chains_.build(*joints_, *order_, ends_, enabled);
+  chained_pins_.clear();
   for (const std::uint32_t position : chains_.chain_positions()) {
+    if (kind_[position] == RowKind::pin) chained_pins_.push_back(position);
     kind_[position] = RowKind::record;
   }
   revolute_positions_.clear();
@@ -51,6 +58,54 @@ std::size_t JointStages::build_chains(bool enabled) {
   return revolute_positions_.size();
 }
 
+void JointStages::lay_out(bool wide, TaskRunner& tasks) {
+  const std::vector<std::uint32_t>& color_begin = *color_begin_;
+  const std::size_t colors = color_begin.size() - 1;  // the overflow last
+  units_.clear();
+  wide_pins_.clear();
+  unit_begin_.assign(colors + 1, 0);
+  wide_positions_.clear();
+  for (std::size_t c = 0; c < colors; ++c) {
+    const bool overflow = c + 1 == colors;
+    const std::uint32_t first = color_begin[c], last = color_begin[c + 1];
+    if (wide && !overflow) {
+      std::uint32_t lane = 0;
+      for (std::uint32_t position = first; position < last; ++position) {
+        if (kind_[position] != RowKind::pin) continue;
+        if (lane == 0) {
+          units_.push_back(kWideUnit | static_cast<std::uint32_t>(wide_pins_.size()));
+          wide_pins_.emplace_back();
+          wide_pins_.back().lanes = 0;
+          // A lane left unused reads the first lane's pin.
+          wide_positions_.insert(wide_positions_.end(), kWideLanes, position);
+        }
+        const auto at = static_cast<std::uint32_t>((wide_pins_.size() - 1) * kWideLanes + lane);
+        pin_lane_[position] = at;
+        wide_positions_[at] = position;
+        ++wide_pins_.back().lanes;
+        lane = (lane + 1) % kWideLanes;
+      }
+    }
+    for (std::uint32_t position = first; position < last; ++position) {
+      if (pin_lane_[position] == kNoLane) units_.push_back(position);
+    }
+    unit_begin_[c + 1] = static_cast<std::uint32_t>(units_.size());
+  }
+  // Each wide row's lanes from its pins.
+  tasks.parallel_for(static_cast<std::uint32_t>(wide_pins_.size()), 32,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       for (std::uint32_t r = begin; r < end; ++r) {
+                         WidePinRows& row = wide_pins_[r];
+                         const std::int32_t lanes = row.lanes;
+                         row = WidePinRows{};
+                         row.lanes = lanes;
+                         for (int lane = 0; lane < kWideLanes; ++lane) {
+                           pack_pin(row, lane, pins_[wide_positions_[r * kWideLanes + lane]]);
+                         }
+                       }
+                     });
+}
+
 void JointStages::fill_revolute_row(std::uint32_t position, const Joint& joint) {
   fill_row(revolute_rows_[row_slot_[position]], std::get<RevoluteJoint>(joint.kind), joint.frame);
 }
@@ -59,9 +114,17 @@ void JointStages::store_row(std::uint32_t position, Joint& joint) const {
   switch (kind_[position]) {
     case RowKind::record:
       return;
-    case RowKind::pin:
-      std::get<RevoluteJoint>(joint.kind).linear_impulse = pins_[position].impulse;
+    case RowKind::pin: {
+      Vec2& impulse = std::get<RevoluteJoint>(joint.kind).linear_impulse;
+      const std::uint32_t lane = pin_lane_[position];
+      if (lane == kNoLane) {
+        impulse = Vec2(pins_[position].impulse_x, pins_[position].impulse_y);
+      } else {
+        const WidePinRows& row = wide_pins_[lane / kWideLanes];
+        impulse = Vec2(row.impulse_x[lane % kWideLanes], row.impulse_y[lane % kWideLanes]);
+      }
       return;
+    }
     case RowKind::revolute:
       detail::store_row(revolute_rows_[row_slot_[position]], std::get<RevoluteJoint>(joint.kind));
       return;
@@ -69,10 +132,15 @@ void JointStages::store_row(std::uint32_t position, Joint& joint) const {
 }
 
 void JointStages::warm_start(SolverBody* bodies, std::uint32_t begin, std::uint32_t end) {
-  for (std::uint32_t i = begin; i < end; ++i) {
+  for (std::uint32_t u = begin; u < end; ++u) {
+    const std::uint32_t i = units_[u];
+    if ((i & kWideUnit) != 0) {
+      const WidePinRows* row = &wide_pins_[i & ~kWideUnit];
+      warm_start_pins_wide(bodies, row, row + 1);
+      continue;
+    }
     if (kind_[i] == RowKind::pin) {
-      const PinRow& row = pins_[i];
-      warm_start_point(bodies, row, row.impulse, 0);
+      warm_start_pin(bodies, pins_[i]);
       continue;
     }
     if (kind_[i] == RowKind::revolute) {
@@ -92,11 +160,15 @@ void JointStages::solve_chains(SolverBody* bodies, bool use_bias, std::uint32_t 
 }
 
 void JointStages::solve(SolverBody* bodies, bool use_bias, std::uint32_t begin, std::uint32_t end) {
-  for (std::uint32_t i = begin; i < end; ++i) {
+  for (std::uint32_t u = begin; u < end; ++u) {
+    const std::uint32_t i = units_[u];
+    if ((i & kWideUnit) != 0) {
+      WidePinRows* row = &wide_pins_[i & ~kWideUnit];
+      solve_pins_wide(bodies, row, row + 1, use_bias);
+      continue;
+    }
     if (kind_[i] == RowKind::pin) {
-      PinRow& row = pins_[i];
-      solve_point(bodies[row.bodies[0].solver], bodies[row.bodies[1].solver], row, use_bias,
-                  row.impulse);
+      solve_pin(bodies, pins_[i], use_bias);
       continue;
     }
     if (kind_[i] == RowKind::revolute) {
@@ -134,9 +206,10 @@ void WorldState::prepare_joints() {
           std::uint64_t kept = joint_marks[word];
           for (std::uint64_t bits = kept; bits != 0; bits &= bits - 1) {
             const int bit = std::countr_zero(bits);
-            const Joint& joint = joints[word * 64 + static_cast<std::uint32_t>(bit)];
+            const detail::JointBodies& joint =
+                joint_bodies[word * 64 + static_cast<std::uint32_t>(bit)];
             bool enabled = true, dynamic = false;
-            for (int k = 0; k < joint.body_count; ++k) {
+            for (std::uint32_t k = 0; k < joint.count; ++k) {
               const Body& b = bodies[joint.body[k]];
               enabled = enabled && b.enabled;
               dynamic = dynamic || b.type == BodyType::dynamic;
@@ -188,9 +261,9 @@ void WorldState::prepare_joints() {
                      solver_info[static_cast<std::size_t>(s)].inv_inertia == 0);
   };
   for (std::size_t i = 0; i < step_joints.size(); ++i) {
-    const Joint& joint = joints[step_joints[i]];
+    const detail::JointBodies& joint = joint_bodies[step_joints[i]];
     std::uint32_t own = 0;
-    for (int k = 0; k < joint.body_count; ++k) own += fixed(joint.body[k]) ? 1 : 0;
+    for (std::uint32_t k = 0; k < joint.count; ++k) own += fixed(joint.body[k]) ? 1 : 0;
     joint_own_slots[i + 1] = joint_own_slots[i] + own;
   }
   const auto first_own = static_cast<std::uint32_t>(solver_bodies.size());
@@ -203,73 +276,95 @@ void WorldState::prepare_joints() {
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
                        for (std::uint32_t k = begin; k < end; ++k) {
                          const std::uint32_t j = joint_order[k], i = joint_position[k];
-                         prepare_joint(j, first_own + joint_own_slots[i], h, soft);
-                         joint_stages.gather(i, joints[j]);
+                         if (!prepare_joint(j, i, first_own + joint_own_slots[i], h, soft, true)) {
+                           joint_stages.gather(i, joints[j]);
+                         }
                        }
                      });
   // Revolute rows are copied once the chains are known (a chain's joints keep their records,
-  // which the chain solver reads), in parallel, each from its record.
+  // which the chain solver reads), in parallel, each from its record; a pin a chain took is
+  // prepared again into its record's frame.
   const auto rows = static_cast<std::uint32_t>(joint_stages.build_chains(def.direct_joint_chains));
+  for (const std::uint32_t position : joint_stages.chained_pins()) {
+    prepare_joint(step_joints[position], position, first_own + joint_own_slots[position], h, soft,
+                  false);
+  }
   tasks.parallel_for(rows, 64, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
     for (std::uint32_t r = begin; r < end; ++r) {
       const std::uint32_t position = joint_stages.revolute_row_position(r);
       joint_stages.fill_revolute_row(position, joints[step_joints[position]]);
     }
   });
+  joint_stages.lay_out(def.simd_solver, tasks);
 }
 
-void WorldState::prepare_joint(std::uint32_t j, std::uint32_t own_slot, Real h,
-                               const detail::Softness& soft) {
-  {
-    Joint& joint = joints[j];
-    detail::JointFrame& frame = joint.frame;
-    // Every field set, rather than the whole frame cleared first: a joint's bodies past its
-    // body count are never written (zero since it was made), and a net's frames are megabytes.
-    frame.anchor_a = frame.anchor_b = frame.delta_center = Vec2(0, 0);
-    frame.coordinate_a = frame.coordinate_b = 0;
-    frame.h = h;
-    frame.inv_h = 1 / h;
-    frame.soft = soft;
-    for (int k = 0; k < joint.body_count; ++k) {
-      const std::uint32_t bi = joint.body[k];
-      const Body& b = bodies[bi];
-      detail::JointBody& jb = frame.bodies[static_cast<std::size_t>(k)];
-      detail::JointBodyStart& start = frame.starts[static_cast<std::size_t>(k)];
-      const std::int32_t s = body_solver_index[bi];
-      start.center = b.center;
-      start.rotation = b.rotation;
-      start.local_center = b.local_center;
-      jb.inv_mass = jb.inv_inertia = 0;
-      if (s >= 0) {
-        jb.inv_mass = solver_info[static_cast<std::size_t>(s)].inv_mass;
-        jb.inv_inertia = solver_info[static_cast<std::size_t>(s)].inv_inertia;
-      }
-      if (jb.inv_mass == 0 && jb.inv_inertia == 0) {
-        // The joint's own copy: the still body's rest, or a kinematic body's motion.
-        jb.solver = static_cast<std::int32_t>(own_slot++);
-        solver_bodies[static_cast<std::size_t>(jb.solver)] =
-            s < 0 ? detail::SolverBody{} : solver_bodies[static_cast<std::size_t>(s)];
-        solver_params[static_cast<std::size_t>(jb.solver)] = detail::SolverBodyParams{};
-      } else {
-        jb.solver = s;
-      }
+bool WorldState::prepare_joint(std::uint32_t j, std::uint32_t position, std::uint32_t own_slot,
+                               Real h, const detail::Softness& soft, bool may_pin) {
+  Joint& joint = joints[j];
+  // A revolute joint that is only its point row (most of a large net) is prepared in a frame
+  // on the stack and solved from its pin row alone: its record's frame, half a kilobyte a
+  // large net would write and read again every step, is not written.
+  auto* revolute = std::get_if<detail::RevoluteJoint>(&joint.kind);
+  const bool pin = may_pin && revolute != nullptr && !revolute->def.spring.enabled &&
+                   !revolute->def.motor.enabled && !revolute->def.limit.enabled;
+  detail::JointFrame local;
+  detail::JointFrame& frame = pin ? local : joint.frame;
+  // Every field set, rather than the whole frame cleared first: a joint's bodies past its
+  // body count are never written (zero since it was made), and a net's frames are megabytes.
+  frame.anchor_a = frame.anchor_b = frame.delta_center = Vec2(0, 0);
+  frame.coordinate_a = frame.coordinate_b = 0;
+  frame.h = h;
+  frame.inv_h = 1 / h;
+  frame.soft = soft;
+  for (int k = 0; k < joint.body_count; ++k) {
+    const std::uint32_t bi = joint.body[k];
+    const Body& b = bodies[bi];
+    detail::JointBody& jb = frame.bodies[static_cast<std::size_t>(k)];
+    detail::JointBodyStart& start = frame.starts[static_cast<std::size_t>(k)];
+    const std::int32_t s = body_solver_index[bi];
+    start.center = b.center;
+    start.rotation = b.rotation;
+    start.local_center = b.local_center;
+    jb.inv_mass = jb.inv_inertia = 0;
+    if (s >= 0) {
+      jb.inv_mass = solver_info[static_cast<std::size_t>(s)].inv_mass;
+      jb.inv_inertia = solver_info[static_cast<std::size_t>(s)].inv_inertia;
     }
-    if (joint.body_count == 4) {
-      // A gear reads its joints' coordinates as the step begins.
-      frame.coordinate_a = joint_coordinate(joint.gear_joints[0]);
-      frame.coordinate_b = joint_coordinate(joint.gear_joints[1]);
+    if (jb.inv_mass == 0 && jb.inv_inertia == 0) {
+      // The joint's own copy: the still body's rest, or a kinematic body's motion.
+      jb.solver = static_cast<std::int32_t>(own_slot++);
+      solver_bodies[static_cast<std::size_t>(jb.solver)] =
+          s < 0 ? detail::SolverBody{} : solver_bodies[static_cast<std::size_t>(s)];
+      solver_params[static_cast<std::size_t>(jb.solver)] = detail::SolverBodyParams{};
+    } else {
+      jb.solver = s;
     }
-    std::visit([&](auto& k) { detail::prepare(k, frame); }, joint.kind);
   }
+  if (pin) {
+    detail::prepare_pin(*revolute, frame);
+    joint_stages.gather_pin(position, frame, *revolute);
+    return true;
+  }
+  if (joint.body_count == 4) {
+    // A gear reads its joints' coordinates as the step begins.
+    frame.coordinate_a = joint_coordinate(joint.gear_joints[0]);
+    frame.coordinate_b = joint_coordinate(joint.gear_joints[1]);
+  }
+  std::visit([&](auto& k) { detail::prepare(k, frame); }, joint.kind);
+  return false;
 }
 
 // A joint's body as the solve left it, with the turn the solver counted (its pose alone gives
 // the turn only up to whole turns).
 detail::JointBodyState WorldState::finished_body_state(std::uint32_t body) const {
   detail::JointBodyState state = joint_body_state(body);
-  const std::int32_t s = body_solver_index[body];
-  if (s >= 0) state.turned = detail::delta_angle(solver_bodies[static_cast<std::size_t>(s)]);
+  state.turned = finished_turn(body);
   return state;
+}
+
+Real WorldState::finished_turn(std::uint32_t body) const {
+  const std::int32_t s = body_solver_index[body];
+  return s < 0 ? 0 : solver_turned[static_cast<std::size_t>(s)];
 }
 
 void WorldState::finish_joints() {
@@ -298,11 +393,22 @@ void WorldState::finish_joint(std::uint32_t k) {
   const std::uint32_t j = joint_order[k];
   Joint& joint = joints[j];
   joint_stages.store_row(joint_position[k], joint);
-  joint.reaction =
-      std::visit([&](const auto& kind) { return detail::reaction(kind, joint.frame); }, joint.kind);
+  if (joint_stages.is_pin(joint_position[k])) {
+    joint.reaction =
+        detail::reaction(std::get<detail::RevoluteJoint>(joint.kind), 1 / (dt / substeps));
+  } else {
+    joint.reaction = std::visit(
+        [&](const auto& kind) { return detail::reaction(kind, joint.frame); }, joint.kind);
+  }
   const JointBase& b = base(joint);
   joint_broke[k] = joint.reaction.force.norm() > b.break_force ||
                    std::abs(joint.reaction.torque) > b.break_torque;
+  // A revolute joint reads only the bodies' rotations (a large net's joints are revolute).
+  if (auto* revolute = std::get_if<detail::RevoluteJoint>(&joint.kind)) {
+    detail::finish_angle(*revolute, bodies[joint.body[0]].rotation, bodies[joint.body[1]].rotation,
+                         finished_turn(joint.body[0]), finished_turn(joint.body[1]));
+    return;
+  }
   const detail::JointBodyState sa = finished_body_state(joint.body[0]);
   const detail::JointBodyState sb = finished_body_state(joint.body[1]);
   std::visit([&](auto& kind) { detail::finish_kind(kind, sa, sb); }, joint.kind);

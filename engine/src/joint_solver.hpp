@@ -8,6 +8,8 @@
 #include "joint.hpp"
 #include "joint_chain_solver.hpp"
 #include "joint_rows.hpp"
+#include "pin_rows.hpp"
+#include "task_runner.hpp"
 
 namespace mink::detail {
 
@@ -15,7 +17,8 @@ namespace mink::detail {
 // contacts, in the order prepare_joints chose: colour by colour (the overflow last), the
 // chains' point rows first in each solve. A colour's joints share no moving body, so the
 // solver may run any range of a colour on any worker. Revolute joints outside the chains are
-// solved from compact rows laid out in that order, not from their kilobyte records.
+// solved from compact rows laid out in that order, not from their kilobyte records; those that
+// are only a point row (pins) kWideLanes at a time in SIMD lanes.
 class JointStages {
  public:
   // `order`: the joints, by colour; `color_begin`: where each colour starts in it (one past the
@@ -34,15 +37,32 @@ class JointStages {
     ends_.resize(joint_count);
     row_slot_.resize(joint_count);
     kind_.assign(joint_count, RowKind::record);
+    pin_lane_.assign(joint_count, kNoLane);
   }
   // Takes what the step's passes read of the joint at `position` of the order, from its
   // prepared frame, while its record is in cache: its ends for the chains, and, if it is only
   // a point row, a pin row it is then solved from instead of its record; any other revolute
   // joint is marked for a revolute row. Thread safe across positions.
   void gather(std::uint32_t position, Joint& joint);
+  // What gather() takes of a pin prepared outside its record (WorldState::prepare_joint), from
+  // the frame it was prepared in. Thread safe across positions.
+  void gather_pin(std::uint32_t position, const JointFrame& frame, const RevoluteJoint& joint);
   // Finds the chains (JointChainSolver::build), whose joints are solved from their records,
   // and gives each revolute row its place; returns how many there are.
   std::size_t build_chains(bool enabled);
+  // The pins build_chains() put in chains, which are solved from their records: their
+  // records' frames must be prepared.
+  const std::vector<std::uint32_t>& chained_pins() const { return chained_pins_; }
+  // Whether the joint at `position` is solved as a pin.
+  bool is_pin(std::uint32_t position) const { return kind_[position] == RowKind::pin; }
+  // Lays out the passes over the joints, once the chains are known: colour by colour (the
+  // overflow last), and within a colour (whose joints share no moving body, so their order
+  // changes no bit) the pins kWideLanes at a time first when `wide`, then the other joints
+  // one at a time. Fills the wide pins, in parallel over `tasks`.
+  void lay_out(bool wide, TaskRunner& tasks);
+  // Where each colour's units begin (one past the overflow at the end): a unit is kWideLanes
+  // pins or one joint, and the passes below run units [begin, end).
+  const std::vector<std::uint32_t>& unit_begin() const { return unit_begin_; }
   // The place in the order of revolute row `slot`.
   std::uint32_t revolute_row_position(std::size_t slot) const { return revolute_positions_[slot]; }
   // Copies the prepared frame and state of the joint at `position` (a revolute row's) into its
@@ -51,8 +71,7 @@ class JointStages {
   // Gives the joint at `position` what its row's solve changed (its impulses), once the
   // substeps are done; nothing for a joint solved from its record.
   void store_row(std::uint32_t position, Joint& joint) const;
-  const std::vector<std::uint32_t>& color_begin() const { return *color_begin_; }
-  // Joints order[begin, end).
+  // Units [begin, end).
   void warm_start(SolverBody* bodies, std::uint32_t begin, std::uint32_t end);
   void solve(SolverBody* bodies, bool use_bias, std::uint32_t begin, std::uint32_t end);
   // The chains' paths [first, last) (chain_paths() in all).
@@ -64,12 +83,22 @@ class JointStages {
   // revolute joint outside a chain: ragdolls), both kept in solve order.
   enum class RowKind : std::uint8_t { record, pin, revolute };
   JointChainSolver chains_;
-  std::vector<PinRow> pins_;             // per position of the order: valid where a pin
+  std::vector<PinRow> pins_;  // per position of the order: valid where a pin
+  // A unit: kWideUnit and the index of its wide pins, or the position of its joint.
+  static constexpr std::uint32_t kWideUnit = 0x80000000u;
+  static constexpr std::uint32_t kNoLane = ~0u;
+  std::vector<std::uint32_t> units_;
+  std::vector<std::uint32_t> unit_begin_;
+  std::vector<WidePinRows> wide_pins_;
+  std::vector<std::uint32_t> pin_lane_;  // per position: its wide pins' lane, where it has one
+  // Per lane of the wide pins: its pin's position (an unused lane's: the first lane's).
+  std::vector<std::uint32_t> wide_positions_;
   std::vector<JointEnds> ends_;          // per position of the order
   std::vector<RowKind> kind_;            // per position; bytes, set from several threads
   std::vector<std::uint32_t> row_slot_;  // per position: its revolute row, where it has one
   std::vector<RevoluteRow> revolute_rows_;
   std::vector<std::uint32_t> revolute_positions_;  // per revolute row: its position
+  std::vector<std::uint32_t> chained_pins_;
   IdPool<Joint>* joints_ = nullptr;
   const std::vector<std::uint32_t>* order_ = nullptr;
   const std::vector<std::uint32_t>* color_begin_ = nullptr;

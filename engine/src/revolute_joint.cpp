@@ -25,6 +25,13 @@ void prepare(RevoluteJoint& joint, JointFrame& frame) {
   drop_switched_off(joint);
 }
 
+void prepare_pin(RevoluteJoint& joint, JointFrame& frame) {
+  set_anchors(frame, joint.def.local_anchor_a, joint.def.local_anchor_b);
+  joint.angle_rows = false;
+  joint.direct = false;
+  drop_switched_off(joint);
+}
+
 namespace {
 
 // What the angle's rows (spring, motor, limits) hold together.
@@ -98,22 +105,39 @@ void solve(RevoluteRow& row, SolverBody* bodies, bool use_bias) {
   solve_rows(row.joint, row.frame, bodies, use_bias);
 }
 
-JointReaction reaction(const RevoluteJoint& joint, const JointFrame& frame) {
-  return {frame.inv_h * joint.linear_impulse, frame.inv_h * angular_impulse(joint)};
+JointReaction reaction(const RevoluteJoint& joint, Real inv_h) {
+  return {inv_h * joint.linear_impulse, inv_h * angular_impulse(joint)};
 }
 
-Real coordinate(const RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b) {
-  const Real now = relative_angle(a.pose.rotation, b.pose.rotation) - joint.def.reference_angle;
+JointReaction reaction(const RevoluteJoint& joint, const JointFrame& frame) {
+  return reaction(joint, frame.inv_h);
+}
+
+namespace {
+
+Real coordinate(const RevoluteJoint& joint, const Rotation& a, const Rotation& b) {
+  const Real now = relative_angle(a, b) - joint.def.reference_angle;
   return joint.angle + wrap_angle(now - joint.angle);
 }
 
+}  // namespace
+
+Real coordinate(const RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b) {
+  return coordinate(joint, a.pose.rotation, b.pose.rotation);
+}
+
 void finish(RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b) {
+  finish_angle(joint, a.pose.rotation, b.pose.rotation, a.turned, b.turned);
+}
+
+void finish_angle(RevoluteJoint& joint, const Rotation& a, const Rotation& b, Real turned_a,
+                  Real turned_b) {
   // The poses give the angle up to whole turns, taken nearest the last; a fast pair turns
   // half a turn and more in a step, and the solver's count of its turn says by how many whole
   // turns the nearest is off.
   constexpr Real two_pi = 2 * std::numbers::pi;
   const Real nearest = coordinate(joint, a, b);
-  const Real whole = std::round((joint.angle + (b.turned - a.turned) - nearest) / two_pi);
+  const Real whole = std::round((joint.angle + (turned_b - turned_a) - nearest) / two_pi);
   joint.angle = nearest + two_pi * whole;
 }
 

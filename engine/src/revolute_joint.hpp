@@ -50,10 +50,18 @@ void solve(RevoluteRow& row, SolverBody* bodies, bool use_bias);
 // The functions every joint kind implements (see joint_solver.cpp for when each runs);
 // finish, coordinate and speed only where the kind has something to say (joint.hpp).
 void prepare(RevoluteJoint& joint, JointFrame& frame);
+// A revolute joint with no spring, motor or limit, solved as a pin (joint_solver.hpp): only
+// what its pin row reads, its anchors, is prepared in `frame`.
+void prepare_pin(RevoluteJoint& joint, JointFrame& frame);
 void warm_start(const RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies);
 void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias);
 JointReaction reaction(const RevoluteJoint& joint, const JointFrame& frame);
+// The same for substeps of 1 / inv_h (a pin's, whose record's frame is not prepared).
+JointReaction reaction(const RevoluteJoint& joint, Real inv_h);
 void finish(RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b);
+// finish() from what it reads of the bodies: their rotations and the turns the solver counted.
+void finish_angle(RevoluteJoint& joint, const Rotation& a, const Rotation& b, Real turned_a,
+                  Real turned_b);
 Real coordinate(const RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b);
 Real speed(const RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b);
 void draw(const RevoluteJoint& joint, const JointBodyState& a, const JointBodyState& b,

@@ -318,6 +318,7 @@ void WorldState::solve() {
   // Each body's step finished in one visit while its records are at hand, bodies in parallel.
   if (def.enable_continuous) continuous.prepare_marks(solver_to_body.size());
   boxes_left.assign(solver_to_body.size(), 0);
+  solver_turned.resize(step_joints.empty() ? 0 : solver_to_body.size());
   tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 128,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
                        for (std::uint32_t si = begin; si < end; ++si) finish_body(si);
@@ -328,6 +329,9 @@ void WorldState::solve() {
 // broadphase takes them in finish_step), its sleep timer, and whether continuous collision
 // must sweep it.
 void WorldState::finish_body(std::uint32_t solver_index) {
+  if (!solver_turned.empty()) {
+    solver_turned[solver_index] = detail::delta_angle(solver_bodies[solver_index]);
+  }
   write_back(solver_index);
   Body& b = bodies[solver_to_body[solver_index]];
   for (const std::uint32_t s : b.shapes) {

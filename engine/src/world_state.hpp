@@ -110,6 +110,9 @@ struct WorldState {
   // Per solver body, this step: whether a shape's box left its broadphase box (found while the
   // body's records are at hand, so the broadphase's serial update visits only those).
   std::vector<std::uint8_t> boxes_left;
+  // Per solver body while the step's joints finish: the angle it turned in the step, counting
+  // whole turns (delta_angle), taken once per body rather than once per joint.
+  std::vector<Real> solver_turned;
   std::vector<std::uint8_t> hit_marks;  // per constraint: whether it is a hit (solve)
   std::vector<detail::SolverBodyInfo> solver_info;
   std::vector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
@@ -197,14 +200,17 @@ struct WorldState {
   bool joint_prevents_contact(std::uint32_t body_a, std::uint32_t body_b) const;
   detail::JointBodyState joint_body_state(std::uint32_t body) const;
   detail::JointBodyState finished_body_state(std::uint32_t body) const;
+  Real finished_turn(std::uint32_t body) const;  // its solver_turned; 0 if the solver left it
   // The joint's free coordinate and its rate now (World::joint_coordinate, joint_speed).
   Real joint_coordinate(std::uint32_t index) const;
   Real joint_speed(std::uint32_t index) const;
   void wake_joint_bodies(std::uint32_t index);
   // joint_solver.cpp
   void prepare_joints();
-  void prepare_joint(std::uint32_t index, std::uint32_t own_slot, Real h,
-                     const detail::Softness& soft);
+  // Prepares joint `index` (at `position` of the step's order) for the step; a plain pin,
+  // when `may_pin`, straight into the joint stages' pin row, which it then returns true for.
+  bool prepare_joint(std::uint32_t index, std::uint32_t position, std::uint32_t own_slot, Real h,
+                     const detail::Softness& soft, bool may_pin);
   void finish_joints();
   void finish_joint(std::uint32_t k);  // joint_order[k]
   // solver_stages.cpp
