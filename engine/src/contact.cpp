@@ -348,6 +348,7 @@ void WorldState::mark_step_contacts(const Body& body, bool concurrent) {
 
 void WorldState::collect_step_contacts() {
   step_contacts.clear();
+  step_contact_keys_valid = false;
   for (std::size_t word = 0; word < step_contact_marks.size(); ++word) {
     for (std::uint64_t bits = step_contact_marks[word]; bits != 0; bits &= bits - 1) {
       step_contacts.push_back(static_cast<std::uint32_t>(word * 64 + std::countr_zero(bits)));
@@ -377,6 +378,7 @@ void WorldState::collide() {
   // the touching count, events) in contact order, for the contacts whose state changed.
   enum : std::uint8_t { kColorChange = 1, kTouchingChange = 2 };
   collide_changes.resize(step_contacts.size());
+  step_contact_keys.resize(step_contacts.size());
   tasks.parallel_for(static_cast<std::uint32_t>(step_contacts.size()), 64,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
                        for (std::uint32_t k = begin; k < end; ++k) {
@@ -387,12 +389,19 @@ void WorldState::collide() {
                          collide_changes[k] = static_cast<std::uint8_t>(
                              (acting != (c.color != detail::kNoColor) ? kColorChange : 0) |
                              (touching != was_touching ? kTouchingChange : 0));
+                         StepContactKey& key = step_contact_keys[k];
+                         key = step_contact_key(c);
+                         key.touching = touching;  // c.touching follows below
                        }
                      });
+  recolored.clear();
   for (std::size_t k = 0; k < step_contacts.size(); ++k) {
     if (collide_changes[k] == 0) continue;
     const std::uint32_t ci = step_contacts[k];
-    if (collide_changes[k] & kColorChange) update_color(ci);
+    if (collide_changes[k] & kColorChange) {
+      update_color(ci);
+      recolored.push_back(static_cast<std::uint32_t>(k));
+    }
     if (!(collide_changes[k] & kTouchingChange)) continue;
     Contact& c = contacts[ci];
     const bool touching = !c.touching;
@@ -405,6 +414,10 @@ void WorldState::collide() {
     }
   }
   assign_new_colors();
+  for (const std::uint32_t k : recolored) {
+    step_contact_keys[k].color = contacts[step_contacts[k]].color;
+  }
+  step_contact_keys_valid = true;
 }
 
 }  // namespace mink

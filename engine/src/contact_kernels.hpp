@@ -46,5 +46,8 @@ void solve_wide(SolverBody* bodies, WideConstraint* begin, WideConstraint* end,
                 WideMaxImpulse* max_impulse, SolverReal inv_h, SolverReal max_push, bool use_bias);
 // Writes `constraint` into lane `lane` of `wide`.
 void pack(WideConstraint& wide, int lane, const ContactConstraint& constraint);
+// Lane `lane` of `wide` as a constraint, its current impulses included; the fields the lanes do
+// not hold (restitution, relative and largest impulses) are zero.
+ContactConstraint unpack(const WideConstraint& wide, int lane);
 
 }  // namespace mink::detail

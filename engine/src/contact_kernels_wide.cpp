@@ -142,4 +142,37 @@ void pack(WideConstraint& w, int lane, const ContactConstraint& c) {
   }
 }
 
+ContactConstraint unpack(const WideConstraint& w, int lane) {
+  ContactConstraint c{};
+  c.body_a = w.body_a[lane];
+  c.body_b = w.body_b[lane];
+  c.inv_mass_a = w.inv_mass_a[lane];
+  c.inv_inertia_a = w.inv_inertia_a[lane];
+  c.inv_mass_b = w.inv_mass_b[lane];
+  c.inv_inertia_b = w.inv_inertia_b[lane];
+  c.nx = w.nx[lane];
+  c.ny = w.ny[lane];
+  c.friction = w.friction[lane];
+  c.bias_rate = w.bias_rate[lane];
+  c.mass_scale = w.mass_scale[lane];
+  c.impulse_scale = w.impulse_scale[lane];
+  c.dx = w.dx[lane];
+  c.dy = w.dy[lane];
+  for (int j = 0; j < 2; ++j) {
+    const WideConstraint::Point& q = w.points[j];
+    ContactConstraintPoint& p = c.points[j];
+    p.ax = q.ax[lane];
+    p.ay = q.ay[lane];
+    // Through the centre offset, as the kernels recompute it (same bits).
+    p.bx = p.ax + c.dx;
+    p.by = p.ay + c.dy;
+    p.base_separation = q.base_separation[lane];
+    p.normal_mass = q.normal_mass[lane];
+    p.tangent_mass = q.tangent_mass[lane];
+    p.normal_impulse = q.normal_impulse[lane];
+    p.tangent_impulse = q.tangent_impulse[lane];
+  }
+  return c;
+}
+
 }  // namespace mink::detail

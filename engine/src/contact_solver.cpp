@@ -122,7 +122,12 @@ void ContactSolver::set(std::uint32_t index, const ContactConstraint& constraint
     scalar_[slot & ~kScalar] = constraint;
   } else {
     pack(wide_[slot / kWideLanes], static_cast<int>(slot % kWideLanes), constraint);
-    if (constraint.restitution > 0) found.restitution.emplace_back(slot, constraint);
+    if (constraint.restitution > 0) {
+      found.restitution.push_back(
+          {slot,
+           constraint.restitution,
+           {constraint.points[0].relative_velocity, constraint.points[1].relative_velocity}});
+    }
   }
 }
 
@@ -145,9 +150,11 @@ void ContactSolver::finish() {
       pack(w, lane, padding);
     }
   }
-  // Bounce in colour order, as the one-at-a-time twin does.
-  std::sort(restitution_.begin(), restitution_.end(),
-            [](const auto& x, const auto& y) { return x.first < y.first; });
+  // Bounce in colour order, as the one-at-a-time twin does (one worker finds them in order).
+  const auto by_slot = [](const Bounce& x, const Bounce& y) { return x.slot < y.slot; };
+  if (!std::is_sorted(restitution_.begin(), restitution_.end(), by_slot)) {
+    std::sort(restitution_.begin(), restitution_.end(), by_slot);
+  }
 }
 
 void ContactSolver::impulses(std::uint32_t index, Real normal[2], Real tangent[2]) const {
@@ -337,11 +344,14 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
   if (!bouncy_) return;
   // Restitution, once per step and rare: one at a time, colours first, then the overflow.
   const SolverReal threshold = settings.restitution_threshold;
-  for (auto& [slot, c] : restitution_) {
+  for (const Bounce& bounce : restitution_) {
+    const std::uint32_t slot = bounce.slot;
     WideConstraint& w = wide_[slot / kWideLanes];
     const int lane = static_cast<int>(slot % kWideLanes);
+    ContactConstraint c = unpack(w, lane);
+    c.restitution = bounce.restitution;
     for (int j = 0; j < 2; ++j) {
-      c.points[j].normal_impulse = w.points[j].normal_impulse[lane];
+      c.points[j].relative_velocity = bounce.relative_velocity[j];
       c.points[j].max_normal_impulse = max_data[slot / kWideLanes].point[j][lane];
     }
     restitution_one(body_data, c, threshold);

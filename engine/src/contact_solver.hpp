@@ -155,12 +155,18 @@ class ContactSolver {
   std::vector<std::uint32_t> wide_begin_;  // into wide_, per colour
   std::vector<std::uint8_t> color_of_;
   std::vector<WideMaxImpulse> max_impulse_;
-  // Wide mode with restitution: scalar copies of the bouncing constraints, in colour order.
-  std::vector<std::pair<std::uint32_t, ContactConstraint>> restitution_;
+  // Wide mode with restitution: the bouncing constraints' slots, in colour order, with what
+  // restitution reads that the lanes do not hold (the rest is read back from the lanes).
+  struct Bounce {
+    std::uint32_t slot;
+    SolverReal restitution;
+    SolverReal relative_velocity[2];
+  };
+  std::vector<Bounce> restitution_;
   // What set() finds per worker, merged by finish() in slot order.
   struct alignas(64) WorkerFindings {
     bool bouncy = false;
-    std::vector<std::pair<std::uint32_t, ContactConstraint>> restitution;
+    std::vector<Bounce> restitution;
   };
   std::vector<WorkerFindings> findings_;
   struct Stage;

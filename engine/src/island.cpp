@@ -93,11 +93,13 @@ void WorldState::update_islands() {
     if (links(bodies[a]) && links(bodies[b])) join_dynamic(a, b);
   };
   // A contact between two dynamic bodies (both enabled: disabling a body destroys its
-  // contacts) links them by its flags alone, without a read of either body's record.
-  for (const std::uint32_t ci : step_contacts) {
-    const Contact& c = contacts[ci];
+  // contacts) links them by its flags alone, without a read of either body's record; the
+  // flags come from the keys collide() left (compact, in order), as the pass runs right after.
+  for (std::size_t k = 0; k < step_contacts.size(); ++k) {
+    const StepContactKey c = step_contact_keys_valid ? step_contact_keys[k]
+                                                     : step_contact_key(contacts[step_contacts[k]]);
     if (!c.a_fixed && !c.b_fixed) {
-      if (c.manifold.point_count > 0) join_dynamic(c.body_a, c.body_b);
+      if (c.acting) join_dynamic(c.body_a, c.body_b);
       continue;
     }
     if (!c.touching) continue;

@@ -56,7 +56,9 @@ void WorldState::prepare_contacts() {
   // Entries stay -1 between steps: only this step's solver bodies are set, and reset in
   // finish_step, so sleeping bodies are never touched.
   body_solver_index.resize(bodies.size(), -1);
-  compact_awake_list();
+  // collide() compacted the list this step; only the island pass, putting islands to sleep
+  // and waking others, changes it since.
+  if (def.enable_sleep && (!fell_asleep.empty() || !woken.empty())) compact_awake_list();
   const auto awake = static_cast<std::uint32_t>(awake_list.size());
   solver_bodies.resize(awake);
   solver_params.resize(awake);
@@ -122,18 +124,22 @@ void WorldState::prepare_contacts() {
   const auto fixed = [&](std::int32_t index) {
     return index < 0 || solver_info[static_cast<std::size_t>(index)].inv_mass == 0;
   };
-  for (std::size_t k = 0; k < step_contacts.size(); ++k) {
-    if (k + kPrefetchAhead < step_contacts.size()) {
-      prefetch_contact(contacts[step_contacts[k + kPrefetchAhead]]);
+  // From the keys collide() left (compact, in order), unless the island pass added woken
+  // contacts to the list since.
+  if (!step_contact_keys_valid) {
+    step_contact_keys.resize(step_contacts.size());
+    for (std::size_t k = 0; k < step_contacts.size(); ++k) {
+      step_contact_keys[k] = step_contact_key(contacts[step_contacts[k]]);
     }
-    const std::uint32_t ci = step_contacts[k];
-    const Contact& c = contacts[ci];
-    if (c.manifold.point_count == 0) continue;
-    const std::int32_t ia = body_solver_index[c.body_a], ib = body_solver_index[c.body_b];
+  }
+  for (std::size_t k = 0; k < step_contacts.size(); ++k) {
+    const StepContactKey& key = step_contact_keys[k];
+    if (!key.acting) continue;
+    const std::int32_t ia = body_solver_index[key.body_a], ib = body_solver_index[key.body_b];
     if (ia < 0 && ib < 0) continue;
-    constraint_contacts.push_back(ci);
+    constraint_contacts.push_back(step_contacts[k]);
     constraint_bodies.push_back(
-        {ia < 0 ? still : ia, ib < 0 ? still : ib, fixed(ia), fixed(ib), c.color});
+        {ia < 0 ? still : ia, ib < 0 ? still : ib, fixed(ia), fixed(ib), key.color});
   }
   // Constraints in order of their first moving body (a stable counting sort): neighbouring
   // constraints then touch neighbouring bodies and the solver's gathers stay in cache.

@@ -79,6 +79,23 @@ struct WorldState {
   // into step_contacts (no sort, and the contacts of sleeping bodies are never touched).
   std::vector<std::uint64_t> step_contact_marks;
   std::vector<std::uint8_t> collide_changes;  // per step contact: what collide() must update
+  // Per step contact, as collide() left it: what the island pass and the solver's gathering
+  // of constraints read, so those serial passes stay off the contact records. Valid while
+  // step_contacts is the list collide() worked through (the island pass may add woken
+  // contacts to it).
+  struct StepContactKey {
+    std::uint32_t body_a, body_b;
+    std::uint8_t color;
+    bool acting;  // has manifold points
+    bool a_fixed, b_fixed, touching;
+  };
+  StepContactKey step_contact_key(const detail::Contact& c) const {
+    return {c.body_a,  c.body_b,  c.color,   c.manifold.point_count > 0,
+            c.a_fixed, c.b_fixed, c.touching};
+  }
+  std::vector<StepContactKey> step_contact_keys;
+  bool step_contact_keys_valid = false;
+  std::vector<std::uint32_t> recolored;  // step contacts whose colour collide() changed
 
   std::vector<ContactBeginEvent> begin_events;
   std::vector<ContactEndEvent> end_events;
