@@ -19,6 +19,12 @@ Manifold circles(const ShapeGeometry& a, const Pose& pa, const ShapeGeometry& b,
   return detail::collide_circles(std::get<Circle>(a), pa, std::get<Circle>(b), pb, margin);
 }
 
+// Circle (A) - capsule, segment or polygon: closed form.
+Manifold circle_and_core(const ShapeGeometry& a, const Pose& pa, const ShapeGeometry& b,
+                         const Pose& pb, Real margin) {
+  return detail::collide_circle_core(std::get<Circle>(a), pa, detail::core_of(b), pb, margin);
+}
+
 // Every pair of circle, capsule, segment and rounded polygon (a segment is a capsule of radius
 // 0): GJK on the cores, the separating-axis test when they overlap, then clipping.
 Manifold cores(const ShapeGeometry& a, const Pose& pa, const ShapeGeometry& b, const Pose& pb,
@@ -48,8 +54,8 @@ Manifold nothing(const ShapeGeometry&, const Pose&, const ShapeGeometry&, const 
   return {};
 }
 
-// The pair functions above take the chain first; this calls them the other way round and
-// turns the normal back to A -> B.
+// The pair functions above take the chain (or the circle) first; this calls them the other
+// way round and turns the normal back to A -> B.
 template <PairFunction f>
 Manifold swapped(const ShapeGeometry& a, const Pose& pa, const ShapeGeometry& b, const Pose& pb,
                  Real margin) {
@@ -63,11 +69,11 @@ constexpr std::size_t kKinds = std::variant_size_v<ShapeGeometry>;
 // Row: A's kind, column: B's kind, in ShapeKind order (circle, capsule, segment, chain segment,
 // polygon).
 constexpr std::array<std::array<PairFunction, kKinds>, kKinds> kTable = {{
-    {circles, cores, cores, swapped<chain_and_shape>, cores},
-    {cores, cores, cores, swapped<chain_and_shape>, cores},
-    {cores, cores, cores, swapped<chain_and_shape>, cores},
+    {circles, circle_and_core, circle_and_core, swapped<chain_and_shape>, circle_and_core},
+    {swapped<circle_and_core>, cores, cores, swapped<chain_and_shape>, cores},
+    {swapped<circle_and_core>, cores, cores, swapped<chain_and_shape>, cores},
     {chain_and_shape, chain_and_shape, chain_and_shape, nothing, chain_and_shape},
-    {cores, cores, cores, swapped<chain_and_shape>, polygons},
+    {swapped<circle_and_core>, cores, cores, swapped<chain_and_shape>, polygons},
 }};
 
 }  // namespace
