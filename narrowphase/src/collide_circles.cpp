@@ -7,37 +7,48 @@
 
 namespace mink::detail {
 
-Manifold collide_circles(const Circle& a, const Pose& pose_a, const Circle& b, const Pose& pose_b,
-                         Real speculative_distance) {
+namespace {
+
+// One point between A's core point `on_a` and B's `on_b` (world), each grown by its radius
+// along `normal` (A to B).
+Manifold one_point(const Vec2& normal, const Vec2& on_a, Real radius_a, const Vec2& on_b,
+                   Real radius_b, Real separation) {
   Manifold m;
-  const Vec2 ca = pose_a.apply(a.center);
-  const Vec2 cb = pose_b.apply(b.center);
-  const Vec2 d = cb - ca;
-  const Real distance = d.norm();
-  const Real separation = distance - a.radius - b.radius;
-  if (separation > speculative_distance) return m;
-  // Concentric: every direction is as good; A's +y.
-  const Vec2 normal = distance > 0 ? Vec2(d / distance) : pose_a.rotation.apply(Vec2(0, 1));
   m.normal = normal;
   m.point_count = 1;
-  m.points[0].point = 0.5 * ((ca + a.radius * normal) + (cb - b.radius * normal));
+  m.points[0].point = 0.5 * ((on_a + radius_a * normal) + (on_b - radius_b * normal));
   m.points[0].separation = separation;
   m.points[0].id = 0;
   return m;
 }
 
+}  // namespace
+
+Manifold collide_circles(const Circle& a, const Pose& pose_a, const Circle& b, const Pose& pose_b,
+                         Real speculative_distance) {
+  const Vec2 ca = pose_a.apply(a.center);
+  const Vec2 cb = pose_b.apply(b.center);
+  const Vec2 d = cb - ca;
+  const Real distance = d.norm();
+  const Real separation = distance - a.radius - b.radius;
+  if (separation > speculative_distance) return {};
+  // Concentric: every direction is as good; A's +y.
+  const Vec2 normal = distance > 0 ? Vec2(d / distance) : pose_a.rotation.apply(Vec2(0, 1));
+  return one_point(normal, ca, a.radius, cb, b.radius, separation);
+}
+
 namespace {
 
 // The core's feature nearest `c` (B's local frame): `to_centre` is the unit direction from it
-// to c, `distance` how far c lies beyond it (negative inside a hull). False when c lies
-// beyond `reach` for certain.
+// to c, `distance` how far c lies beyond it (negative inside a hull). nearest_on_hull gives
+// false when c lies beyond `reach` for certain.
 struct Nearest {
   Vec2 point{0, 0};
   Vec2 to_centre{0, 1};
   Real distance = 0;
 };
 
-bool nearest_on_segment(const Vec2& p, const Vec2& q, const Vec2& c, Nearest& n) {
+void nearest_on_segment(const Vec2& p, const Vec2& q, const Vec2& c, Nearest& n) {
   const Vec2 e = q - p;
   const Real length_squared = e.squaredNorm();
   Real t = length_squared > 0 ? (c - p).dot(e) / length_squared : 0;
@@ -51,7 +62,6 @@ bool nearest_on_segment(const Vec2& p, const Vec2& q, const Vec2& c, Nearest& n)
     // The centre on the segment: its left side (the segment's first face) is as good as any.
     n.to_centre = Vec2(-e.y(), e.x()) / std::sqrt(length_squared);
   }
-  return true;
 }
 
 bool nearest_on_hull(const PreparedHull& hull, const Vec2& c, Real reach, Nearest& n) {
@@ -97,26 +107,19 @@ bool nearest_on_hull(const PreparedHull& hull, const Vec2& c, Real reach, Neares
 
 Manifold collide_circle_core(const Circle& a, const Pose& pose_a, const Core& b, const Pose& pose_b,
                              Real speculative_distance) {
-  Manifold m;
   const Vec2 centre = pose_a.apply(a.center);
   const Vec2 c = pose_b.apply_inverse(centre);
   const Real radii = a.radius + b.radius;
   Nearest n;
   if (b.hull != nullptr) {
-    if (!nearest_on_hull(*b.hull, c, radii + speculative_distance, n)) return m;
+    if (!nearest_on_hull(*b.hull, c, radii + speculative_distance, n)) return {};
   } else {
     nearest_on_segment(b.small[0], b.count == 2 ? b.small[1] : b.small[0], c, n);
   }
   const Real separation = n.distance - radii;
-  if (separation > speculative_distance) return m;
-  const Vec2 normal = -pose_b.rotation.apply(n.to_centre);
-  const Vec2 on_b = pose_b.apply(n.point);
-  m.normal = normal;
-  m.point_count = 1;
-  m.points[0].point = 0.5 * ((centre + a.radius * normal) + (on_b - b.radius * normal));
-  m.points[0].separation = separation;
-  m.points[0].id = 0;
-  return m;
+  if (separation > speculative_distance) return {};
+  return one_point(-pose_b.rotation.apply(n.to_centre), centre, a.radius, pose_b.apply(n.point),
+                   b.radius, separation);
 }
 
 }  // namespace mink::detail
