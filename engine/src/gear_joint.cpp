@@ -64,7 +64,7 @@ GearRow gear_row(const GearJoint& joint, const JointFrame& frame, const SolverBo
       row.add(ja, -scale * axis, -scale * cross(d + ra, axis));
       row.add(jb, scale * axis, scale * cross(rb, axis));
     } else {
-      value += delta_angle(b) - delta_angle(a);
+      value += relative_turn(a, b);
       row.add(ja, Vec2(0, 0), -scale);
       row.add(jb, Vec2(0, 0), scale);
     }

@@ -103,6 +103,20 @@ inline Real delta_angle(const SolverBody& b) {
   return exact + two_pi * std::round((b.turn - exact) / two_pi);
 }
 
+// B's turn since the step began less A's, counting whole turns: delta_angle(b) -
+// delta_angle(a), from one arc tangent of the relative rotation rather than two. The rows of
+// a ragdoll's limits and springs ask for it every pass.
+inline Real relative_turn(const SolverBody& a, const SolverBody& b) {
+  constexpr Real two_pi = 2 * std::numbers::pi;
+  const SolverReal c = a.qc * b.qc + a.qs * b.qs;  // cos and sin of B's angle less A's
+  const SolverReal s = a.qc * b.qs - a.qs * b.qc;
+  const Real exact = std::atan2(s, c);
+  const Real turned = Real{b.turn} - Real{a.turn};
+  // Less than a quarter turn apart, as the principal angle tells (see delta_angle).
+  if (std::abs(turned) <= Real{1.5}) return exact;
+  return exact + two_pi * std::round((turned - exact) / two_pi);
+}
+
 // Applies impulse `p` at offset `r` (and angular impulse `l`) to B and the opposite to A.
 // `Frame`: a JointFrame, or a row's frame (joint_rows.hpp), which holds the same fields.
 template <typename Frame>

@@ -49,7 +49,7 @@ void solve(MotorJoint& joint, const JointFrame& frame, SolverBody* bodies, bool)
   const JointBody& ja = frame.bodies[0];
   const JointBody& jb = frame.bodies[1];
   if (joint.axial_mass > 0) {
-    const Real error = joint.angle_error + (delta_angle(b) - delta_angle(a));
+    const Real error = joint.angle_error + relative_turn(a, b);
     const Real braking = 0.5 * def.max_torque / joint.axial_mass;
     const Real speed = approach_speed(std::abs(error), rate, braking);
     const JointMotor turn{true, error > 0 ? -speed : speed, def.max_torque};

@@ -81,7 +81,7 @@ void solve(PrismaticJoint& joint, const JointFrame& frame, SolverBody* bodies, b
     solve_axial_limits(s.along, frame, a, b, s.translation, def.limit, use_bias,
                        joint.lower_impulse, joint.upper_impulse);
   }
-  const Real angle_error = joint.angle_error + (delta_angle(b) - delta_angle(a));
+  const Real angle_error = joint.angle_error + relative_turn(a, b);
   solve_block(s, frame, a, b, angle_error, use_bias, joint.block_impulse);
 }
 

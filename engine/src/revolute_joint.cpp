@@ -56,7 +56,7 @@ void solve_rows(Joint& joint, const Frame& frame, SolverBody* bodies, bool use_b
     // large net otherwise), once: the rows change velocities, not the angle.
     const bool needs_angle = def.spring.enabled || def.limit.enabled;
     const Real angle =
-        needs_angle ? frame.coordinate_a + (delta_angle(b) - delta_angle(a)) : Real{0};
+        needs_angle ? frame.coordinate_a + relative_turn(a, b) : Real{0};
     if (def.spring.enabled) {
       solve_angular_spring(a, b, frame, joint.axial_mass, joint.spring_soft,
                            angle - def.spring.target, joint.spring_impulse);

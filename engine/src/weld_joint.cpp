@@ -29,7 +29,7 @@ void solve(WeldJoint& joint, const JointFrame& frame, SolverBody* bodies, bool u
   SolverBody& b = bodies[frame.bodies[1].solver];
   const WeldJointDef& def = joint.def;
   if (joint.axial_mass > 0) {
-    const Real error = joint.angle_error + (delta_angle(b) - delta_angle(a));
+    const Real error = joint.angle_error + relative_turn(a, b);
     if (def.angular_hertz > 0) {
       solve_angular_spring(a, b, frame, joint.axial_mass, joint.angular_soft, error,
                            joint.angular_impulse);
