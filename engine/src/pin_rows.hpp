@@ -41,7 +41,7 @@ struct WidePinRows {
 // them a field per register.
 template <typename Row, typename Body>
 __attribute__((always_inline)) inline void pin_warm_start(Body& a, Body& b, const Row& t,
-                                                          decltype(Row::impulse_x) angular) {
+                                                          const decltype(Row::impulse_x)& angular) {
   using T = decltype(Row::impulse_x);
   const T px = t.impulse_x, py = t.impulse_y;
   const T rax = a.qc * t.anchor_ax - a.qs * t.anchor_ay;

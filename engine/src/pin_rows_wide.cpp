@@ -21,7 +21,8 @@ MINK_WIDE_KERNEL void warm_start_pins_wide(SolverBody* bodies, const WidePinRows
   for (const WidePinRows* r = begin; r != end; ++r) {
     WideBody a = gather(bodies, r->body_a);
     WideBody b = gather(bodies, r->body_b);
-    pin_warm_start(a, b, *r, Wide{});
+    const Wide no_angular{};
+    pin_warm_start(a, b, *r, no_angular);
     scatter_lanes(bodies, r->body_a, a, r->lanes);
     scatter_lanes(bodies, r->body_b, b, r->lanes);
   }
