@@ -191,14 +191,17 @@ void WorldState::prepare_joints() {
   joint_marks.assign((joints.size() + 63) / 64, 0);
   joint_slot_color.resize(joints.size());
   const bool concurrent = tasks.workers() > 1;
-  tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 256,
-                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-                       for (std::uint32_t k = begin; k < end; ++k) {
-                         for (const std::uint32_t j : bodies[solver_to_body[k]].joints) {
-                           detail::set_mark(joint_marks, j, concurrent);
+  // A world without joints skips the visit to every moving body's record.
+  if (joints.live() > 0) {
+    tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 256,
+                       [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                         for (std::uint32_t k = begin; k < end; ++k) {
+                           for (const std::uint32_t j : bodies[solver_to_body[k]].joints) {
+                             detail::set_mark(joint_marks, j, concurrent);
+                           }
                          }
-                       }
-                     });
+                       });
+  }
   tasks.parallel_for(
       static_cast<std::uint32_t>(joint_marks.size()), 16,
       [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
