@@ -23,15 +23,8 @@ void JointStages::gather(std::uint32_t position, Joint& joint) {
   ends_[position] = {{frame.bodies[0], frame.bodies[1]}, revolute != nullptr};
   if (revolute == nullptr) return;
   revolute->direct = false;
-  const RevoluteJointDef& def = revolute->def;
-  // Switched off rows have no impulse left (prepare drops them): the warm start's angular
-  // impulse is zero, as a pin's.
-  if (revolute->angle_rows || def.spring.enabled || def.motor.enabled || def.limit.enabled) {
-    kind_[position] = RowKind::revolute;
-    return;
-  }
-  pins_[position] = pin_row(frame, revolute->linear_impulse);
-  kind_[position] = RowKind::pin;
+  // A revolute joint not prepared as a pin (prepare_joint) has a spring, motor or limit.
+  kind_[position] = RowKind::revolute;
 }
 
 void JointStages::gather_pin(std::uint32_t position, const JointFrame& frame,

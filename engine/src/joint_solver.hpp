@@ -40,12 +40,13 @@ class JointStages {
     pin_lane_.assign(joint_count, kNoLane);
   }
   // Takes what the step's passes read of the joint at `position` of the order, from its
-  // prepared frame, while its record is in cache: its ends for the chains, and, if it is only
-  // a point row, a pin row it is then solved from instead of its record; any other revolute
-  // joint is marked for a revolute row. Thread safe across positions.
+  // prepared frame, while its record is in cache: its ends for the chains; a revolute joint
+  // (one with a spring, motor or limit: a pin is gathered by gather_pin) is marked for a
+  // revolute row. Thread safe across positions.
   void gather(std::uint32_t position, Joint& joint);
-  // What gather() takes of a pin prepared outside its record (WorldState::prepare_joint), from
-  // the frame it was prepared in. Thread safe across positions.
+  // The same for a pin, prepared outside its record (WorldState::prepare_joint) in `frame`:
+  // also the pin row it is then solved from instead of its record. Thread safe across
+  // positions.
   void gather_pin(std::uint32_t position, const JointFrame& frame, const RevoluteJoint& joint);
   // Finds the chains (JointChainSolver::build), whose joints are solved from their records,
   // and gives each revolute row its place; returns how many there are.
