@@ -55,8 +55,7 @@ void solve_rows(Joint& joint, const Frame& frame, SolverBody* bodies, bool use_b
     // The angle only where a row needs it (two arc tangents a substep, for every joint of a
     // large net otherwise), once: the rows change velocities, not the angle.
     const bool needs_angle = def.spring.enabled || def.limit.enabled;
-    const Real angle =
-        needs_angle ? frame.coordinate_a + relative_turn(a, b) : Real{0};
+    const Real angle = needs_angle ? frame.coordinate_a + relative_turn(a, b) : Real{0};
     if (def.spring.enabled) {
       solve_angular_spring(a, b, frame, joint.axial_mass, joint.spring_soft,
                            angle - def.spring.target, joint.spring_impulse);
