@@ -346,6 +346,17 @@ void WorldState::mark_step_contacts(const Body& body, bool concurrent) {
   for (const std::uint32_t ci : body.contacts) detail::set_mark(step_contact_marks, ci, concurrent);
 }
 
+const std::vector<WorldState::StepContactKey>& WorldState::current_step_contact_keys() {
+  if (!step_contact_keys_valid) {
+    step_contact_keys.resize(step_contacts.size());
+    for (std::size_t k = 0; k < step_contacts.size(); ++k) {
+      step_contact_keys[k] = step_contact_key(contacts[step_contacts[k]]);
+    }
+    step_contact_keys_valid = true;
+  }
+  return step_contact_keys;
+}
+
 void WorldState::collect_step_contacts() {
   step_contacts.clear();
   step_contact_keys_valid = false;
@@ -394,14 +405,10 @@ void WorldState::collide() {
                          key.touching = touching;  // c.touching follows below
                        }
                      });
-  recolored.clear();
   for (std::size_t k = 0; k < step_contacts.size(); ++k) {
     if (collide_changes[k] == 0) continue;
     const std::uint32_t ci = step_contacts[k];
-    if (collide_changes[k] & kColorChange) {
-      update_color(ci);
-      recolored.push_back(static_cast<std::uint32_t>(k));
-    }
+    if (collide_changes[k] & kColorChange) update_color(ci);
     if (!(collide_changes[k] & kTouchingChange)) continue;
     Contact& c = contacts[ci];
     const bool touching = !c.touching;
@@ -414,8 +421,11 @@ void WorldState::collide() {
     }
   }
   assign_new_colors();
-  for (const std::uint32_t k : recolored) {
-    step_contact_keys[k].color = contacts[step_contacts[k]].color;
+  // The colours just given or taken back, into the keys.
+  for (std::size_t k = 0; k < step_contacts.size(); ++k) {
+    if (collide_changes[k] & kColorChange) {
+      step_contact_keys[k].color = contacts[step_contacts[k]].color;
+    }
   }
   step_contact_keys_valid = true;
 }

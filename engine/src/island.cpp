@@ -94,10 +94,8 @@ void WorldState::update_islands() {
   };
   // A contact between two dynamic bodies (both enabled: disabling a body destroys its
   // contacts) links them by its flags alone, without a read of either body's record; the
-  // flags come from the keys collide() left (compact, in order), as the pass runs right after.
-  for (std::size_t k = 0; k < step_contacts.size(); ++k) {
-    const StepContactKey c = step_contact_keys_valid ? step_contact_keys[k]
-                                                     : step_contact_key(contacts[step_contacts[k]]);
+  // flags come from the compact keys, in order.
+  for (const StepContactKey& c : current_step_contact_keys()) {
     if (!c.a_fixed && !c.b_fixed) {
       if (c.acting) join_dynamic(c.body_a, c.body_b);
       continue;

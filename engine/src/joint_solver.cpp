@@ -68,7 +68,6 @@ void JointStages::lay_out(bool wide, TaskRunner& tasks) {
         if (lane == 0) {
           units_.push_back(kWideUnit | static_cast<std::uint32_t>(wide_pins_.size()));
           wide_pins_.emplace_back();
-          wide_pins_.back().lanes = 0;
           // A lane left unused reads the first lane's pin.
           wide_positions_.insert(wide_positions_.end(), kWideLanes, position);
         }
@@ -89,9 +88,6 @@ void JointStages::lay_out(bool wide, TaskRunner& tasks) {
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
                        for (std::uint32_t r = begin; r < end; ++r) {
                          WidePinRows& row = wide_pins_[r];
-                         const std::int32_t lanes = row.lanes;
-                         row = WidePinRows{};
-                         row.lanes = lanes;
                          for (int lane = 0; lane < kWideLanes; ++lane) {
                            pack_pin(row, lane, pins_[wide_positions_[r * kWideLanes + lane]]);
                          }
@@ -366,10 +362,11 @@ Real WorldState::finished_turn(std::uint32_t body) const {
 void WorldState::finish_joints() {
   // Each joint's bookkeeping is its own (it reads bodies, writes only itself), so it runs in
   // parallel, in slot order; the breaks are gathered after.
+  const Real inv_h = 1 / (dt / substeps);  // as prepare_joint gives the frames
   joint_broke.assign(joint_order.size(), 0);
   tasks.parallel_for(static_cast<std::uint32_t>(joint_order.size()), 64,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-                       for (std::uint32_t k = begin; k < end; ++k) finish_joint(k);
+                       for (std::uint32_t k = begin; k < end; ++k) finish_joint(k, inv_h);
                      });
   joint_break_events.clear();
   for (std::size_t k = 0; k < joint_order.size(); ++k) {
@@ -385,22 +382,23 @@ void WorldState::finish_joints() {
             });
 }
 
-void WorldState::finish_joint(std::uint32_t k) {
+void WorldState::finish_joint(std::uint32_t k, Real inv_h) {
   const std::uint32_t j = joint_order[k];
   Joint& joint = joints[j];
   joint_stages.store_row(joint_position[k], joint);
-  if (joint_stages.is_pin(joint_position[k])) {
-    joint.reaction =
-        detail::reaction(std::get<detail::RevoluteJoint>(joint.kind), 1 / (dt / substeps));
-  } else {
-    joint.reaction = std::visit(
-        [&](const auto& kind) { return detail::reaction(kind, joint.frame); }, joint.kind);
-  }
+  // A revolute joint's force from the step's substep length rather than its frame, which a
+  // pin's record does not have prepared; it reads only the bodies' rotations to finish (a
+  // large net's joints are revolute).
+  auto* revolute = std::get_if<detail::RevoluteJoint>(&joint.kind);
+  joint.reaction =
+      revolute != nullptr
+          ? detail::reaction(*revolute, inv_h)
+          : std::visit([&](const auto& kind) { return detail::reaction(kind, joint.frame); },
+                       joint.kind);
   const JointBase& b = base(joint);
   joint_broke[k] = joint.reaction.force.norm() > b.break_force ||
                    std::abs(joint.reaction.torque) > b.break_torque;
-  // A revolute joint reads only the bodies' rotations (a large net's joints are revolute).
-  if (auto* revolute = std::get_if<detail::RevoluteJoint>(&joint.kind)) {
+  if (revolute != nullptr) {
     detail::finish_angle(*revolute, bodies[joint.body[0]].rotation, bodies[joint.body[1]].rotation,
                          finished_turn(joint.body[0]), finished_turn(joint.body[1]));
     return;

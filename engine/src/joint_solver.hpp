@@ -54,8 +54,6 @@ class JointStages {
   // The pins build_chains() put in chains, which are solved from their records: their
   // records' frames must be prepared.
   const std::vector<std::uint32_t>& chained_pins() const { return chained_pins_; }
-  // Whether the joint at `position` is solved as a pin.
-  bool is_pin(std::uint32_t position) const { return kind_[position] == RowKind::pin; }
   // Lays out the passes over the joints, once the chains are known: colour by colour (the
   // overflow last), and within a colour (whose joints share no moving body, so their order
   // changes no bit) the pins kWideLanes at a time first when `wide`, then the other joints

@@ -124,16 +124,10 @@ void WorldState::prepare_contacts() {
   const auto fixed = [&](std::int32_t index) {
     return index < 0 || solver_info[static_cast<std::size_t>(index)].inv_mass == 0;
   };
-  // From the keys collide() left (compact, in order), unless the island pass added woken
-  // contacts to the list since.
-  if (!step_contact_keys_valid) {
-    step_contact_keys.resize(step_contacts.size());
-    for (std::size_t k = 0; k < step_contacts.size(); ++k) {
-      step_contact_keys[k] = step_contact_key(contacts[step_contacts[k]]);
-    }
-  }
+  // From the compact keys, in order, rather than the contact records.
+  const std::vector<StepContactKey>& keys = current_step_contact_keys();
   for (std::size_t k = 0; k < step_contacts.size(); ++k) {
-    const StepContactKey& key = step_contact_keys[k];
+    const StepContactKey& key = keys[k];
     if (!key.acting) continue;
     const std::int32_t ia = body_solver_index[key.body_a], ib = body_solver_index[key.body_b];
     if (ia < 0 && ib < 0) continue;

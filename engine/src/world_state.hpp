@@ -95,7 +95,9 @@ struct WorldState {
   }
   std::vector<StepContactKey> step_contact_keys;
   bool step_contact_keys_valid = false;
-  std::vector<std::uint32_t> recolored;  // step contacts whose colour collide() changed
+  // The keys of step_contacts as they are now: collide()'s, or read again from the contacts
+  // when the list changed since.
+  const std::vector<StepContactKey>& current_step_contact_keys();
 
   std::vector<ContactBeginEvent> begin_events;
   std::vector<ContactEndEvent> end_events;
@@ -229,7 +231,7 @@ struct WorldState {
   bool prepare_joint(std::uint32_t index, std::uint32_t position, std::uint32_t own_slot, Real h,
                      const detail::Softness& soft, bool may_pin);
   void finish_joints();
-  void finish_joint(std::uint32_t k);  // joint_order[k]
+  void finish_joint(std::uint32_t k, Real inv_h);  // joint_order[k]; substeps of 1 / inv_h
   // solver_stages.cpp
   void prepare_contacts();
   void solve();
