@@ -16,12 +16,14 @@ namespace mink::cli {
 
 namespace {
 
-ConvexHull hull_named(std::span<const Vec2> points, const char* name) {
+PreparedHull hull_named(std::span<const Vec2> points, const char* name) {
   try {
-    return build_hull(points, HullAlgorithm::monotone_chain);
+    return PreparedHull(build_hull(points, HullAlgorithm::monotone_chain));
   } catch (const DegenerateInputError& error) {
     throw DegenerateInputError(std::string(name) + ": " + error.what());
   } catch (const NonFiniteInputError& error) {
+    throw InvalidArgumentError(std::string(name) + ": " + error.what());
+  } catch (const InvalidArgumentError& error) {
     throw InvalidArgumentError(std::string(name) + ": " + error.what());
   }
 }
@@ -53,9 +55,10 @@ std::string format_number(Real value) {
 
 }  // namespace
 
-OverlapAnswer answer_overlap(std::span<const Vec2> a_points, std::span<const Vec2> b_points) {
-  const PreparedHull a(hull_named(a_points, "a"));
-  const PreparedHull b(hull_named(b_points, "b"));
+namespace {
+
+// GJK's answer, and the exact verdict where the gap is within rounding of zero.
+OverlapAnswer measure_overlap(const PreparedHull& a, const PreparedHull& b) {
   const Pose identity{};
   const DistanceResult d = gjk_distance(a, identity, b, identity);
   OverlapAnswer answer;
@@ -69,14 +72,6 @@ OverlapAnswer answer_overlap(std::span<const Vec2> a_points, std::span<const Vec
   } else {
     answer.distance = d.distance;
     answer.normal = d.normal;
-  }
-  // Hulls 1e154 apart or more have a distance (or a depth) beyond a double: say so rather than
-  // print an infinity, which is no JSON number.
-  if (!std::isfinite(answer.distance) || !std::isfinite(answer.depth) ||
-      !answer.normal.allFinite()) {
-    throw InvalidArgumentError(std::string("the hulls' ") +
-                               (answer.overlap ? "penetration depth" : "distance") +
-                               " is too large for a double");
   }
   Real magnitude = 0;
   for (const auto* hull : {&a, &b}) {
@@ -95,6 +90,48 @@ OverlapAnswer answer_overlap(std::span<const Vec2> a_points, std::span<const Vec
     // Rare: GJK's rounding saw touching where the exact test sees a gap.
     const BruteDistance scanned = hull_distance_brute(a.vertices(), b.vertices());
     answer = {false, scanned.distance, 0, scanned.normal, answer.iterations};
+  }
+  return answer;
+}
+
+}  // namespace
+
+OverlapAnswer answer_overlap(std::span<const Vec2> a_points, std::span<const Vec2> b_points) {
+  // GJK's simplex solve multiplies two cross products of differences, a fourth power of the
+  // coordinates: from about 1e76 on it overflows, in one order of a and b and not the other.
+  // Sets reaching beyond 2^200 are scaled by a power of two down to that magnitude, which
+  // changes no digit of any coordinate (scaling them to unit size instead would have small
+  // gaps' squares underflow); the lengths found are scaled back.
+  Real magnitude = 0;
+  for (const auto points : {a_points, b_points}) {
+    for (const Vec2& p : points) {
+      magnitude = std::max({magnitude, std::abs(p.x()), std::abs(p.y())});
+    }
+  }
+  constexpr int kLargestUnscaledExponent = 200;
+  const int scale = magnitude > std::ldexp(Real(1), kLargestUnscaledExponent + 1)
+                        ? std::ilogb(magnitude) - kLargestUnscaledExponent
+                        : 0;
+  const auto scaled = [scale](std::span<const Vec2> points) {
+    std::vector<Vec2> result;
+    result.reserve(points.size());
+    for (const Vec2& p : points)
+      result.emplace_back(std::ldexp(p.x(), -scale), std::ldexp(p.y(), -scale));
+    return result;
+  };
+  OverlapAnswer answer =
+      scale == 0
+          ? measure_overlap(hull_named(a_points, "a"), hull_named(b_points, "b"))
+          : measure_overlap(hull_named(scaled(a_points), "a"), hull_named(scaled(b_points), "b"));
+  answer.distance = std::ldexp(answer.distance, scale);
+  answer.depth = std::ldexp(answer.depth, scale);
+  // Hulls at opposite ends of the doubles' range have a distance (or a depth) beyond a double:
+  // say so rather than print an infinity, which is no JSON number.
+  if (!std::isfinite(answer.distance) || !std::isfinite(answer.depth) ||
+      !answer.normal.allFinite()) {
+    throw InvalidArgumentError(std::string("the hulls' ") +
+                               (answer.overlap ? "penetration depth" : "distance") +
+                               " is too large for a double");
   }
   return answer;
 }

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "gjk_distance_loop.hpp"
+#include "pair_frame.hpp"
 
 namespace mink {
 
@@ -20,7 +21,7 @@ DistanceResult gjk_distance(const PreparedHull& a, const Pose& pose_a, const Pre
   result.point_b = pose_a.apply(local.point_b);
   if (!local.overlap) {
     result.distance = local.distance;
-    result.normal = pose_a.rotation.apply(local.gap / local.distance);
+    result.normal = pose_a.rotation.apply(detail::rescaled_unit(local.gap));
   }
   result.simplex = local.simplex;
   return result;
@@ -38,10 +39,10 @@ BruteDistance hull_distance_brute(std::span<const Vec2> a, std::span<const Vec2>
         const Real len2 = e.squaredNorm();
         const Real t = len2 > 0 ? std::clamp((v - s0).dot(e) / len2, Real(0), Real(1)) : 0;
         const Vec2 gap = v - (s0 + t * e);  // from q's nearest point to v
-        const Real d = gap.norm();
+        const Real d = detail::rescaled_norm(gap);
         if (d < best.distance) {
           best.distance = d;
-          const Vec2 u = d > 0 ? Vec2(gap / d) : Vec2(0, 0);
+          const Vec2 u = d > 0 ? detail::rescaled_unit(gap) : Vec2(0, 0);
           best.normal = pass == 0 ? Vec2(-u) : u;  // v on A: from B's point to A's
         }
       }

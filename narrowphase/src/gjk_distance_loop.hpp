@@ -217,7 +217,7 @@ static LocalDistance distance_loop(const Frame& frame, SimplexCache* cache) {
       gap = signed_gap * n;
     }
     result.gap = gap;
-    result.distance = gap.norm();
+    result.distance = rescaled_norm(gap);
     if (!(result.distance > 0)) result.overlap = true;
   }
   result.simplex = PairFrame::indices(s);

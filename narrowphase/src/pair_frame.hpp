@@ -145,6 +145,20 @@ inline Vec2 rescaled_direction(const Vec2& v) {
   return Vec2(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e));
 }
 
+// |v| without the squares underflowing or overflowing far from unit size; exactly v.norm()
+// between 2^-200 and 2^200.
+inline Real rescaled_norm(const Vec2& v) {
+  const Real m = std::max(std::abs(v.x()), std::abs(v.y()));
+  if ((m >= 0x1p-200 && m <= 0x1p200) || m == 0 || !std::isfinite(m)) return v.norm();
+  const int e = std::ilogb(m);
+  return std::ldexp(Vec2(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e)).norm(), e);
+}
+
+// v / |v|, likewise safe far from unit size.
+inline Vec2 rescaled_unit(const Vec2& v) {
+  return rescaled_direction(v).normalized();
+}
+
 // orient2d(p, q, origin): the same products and the same filter with c = 0 folded in (the
 // generic call subtracts a zero it cannot see is zero), so the same sign.
 inline int orient_about_origin(const Vec2& p, const Vec2& q) noexcept {

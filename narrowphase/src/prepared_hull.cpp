@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 
+#include "mink/error.hpp"
 #include "mink/geometry/polygon.hpp"
 
 namespace mink {
@@ -15,6 +18,13 @@ PreparedHull::PreparedHull(ConvexHull hull) : hull_(std::move(hull)) {
   Real extent = 0;
   for (const Vec2& p : v) {
     extent = std::max({extent, std::abs(p.x() - v[0].x()), std::abs(p.y() - v[0].y())});
+  }
+  if (!std::isfinite(extent)) {
+    // Each vertex is finite, but two lie farther apart than a double holds: no edge, area or
+    // distance of this hull can be computed.
+    throw InvalidArgumentError("a hull whose vertices lie more than " +
+                               std::to_string(std::numeric_limits<Real>::max()) +
+                               " apart along an axis (beyond a double)");
   }
   const int scale = std::ilogb(extent);
   std::vector<Vec2> scaled;

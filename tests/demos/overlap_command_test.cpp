@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -190,16 +191,48 @@ TEST(OverlapCommand, ANumberTooLargeForADoubleIsAnErrorLine) {
   EXPECT_EQ(out[1]["distance"].get<Real>(), 2);
 }
 
-// Found by the overlap_line fuzz harness: hulls 1e302 m apart have a distance beyond a double,
-// and the line said "distance": inf, which is no JSON.
+// Found by the overlap_line fuzz harness: hulls 1e302 m apart gave "distance": inf, which is no
+// JSON. Far-out point sets are now scaled by a power of two before GJK, so such a distance is
+// answered; only a distance beyond a double (hulls at opposite ends of its range) is an error.
 TEST(OverlapCommand, ADistanceTooLargeForADoubleIsAnErrorLine) {
-  const CliResult r = run_cli(
-      {"overlap", "-"}, "{\"a\": [[0,0],[1,0],[0,1]], \"b\": [[1e302,0],[2e302,0],[1e302,1]]}\n");
+  const CliResult r =
+      run_cli({"overlap", "-"},
+              "{\"a\": [[0,0],[1,0],[0,1]], \"b\": [[1e302,0],[2e302,0],[1e302,1]]}\n"
+              "{\"a\": [[-1.7e308,0],[-1e308,0],[-1.7e308,1]], "
+              "\"b\": [[1.7e308,0],[1e308,0],[1.7e308,1]]}\n");
   const auto out = parse_lines(r.out);
   EXPECT_EQ(r.code, 2);
-  ASSERT_EQ(out.size(), 1u);
-  EXPECT_EQ(out[0]["error"].get<std::string>(),
-            "line 1: the hulls' distance is too large for a double");
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_FALSE(out[0]["overlap"].get<bool>());
+  EXPECT_EQ(out[0]["distance"].get<Real>(), 1e302);
+  EXPECT_EQ(out[0]["normal"][0].get<Real>(), 1);
+  EXPECT_EQ(out[0]["normal"][1].get<Real>(), 0);
+  EXPECT_EQ(out[1]["error"].get<std::string>(),
+            "line 2: the hulls' distance is too large for a double");
+}
+
+// Found by the overlap_line fuzz harness: far out, GJK's fourth powers of the coordinates
+// overflowed in one order of a and b only, so swapping them changed the verdict; and a gap
+// of 1e-21 beside coordinates of 1e200 came back with a normal 1e-5 off unit length.
+TEST(OverlapCommand, FarOutAndTinyGapsKeepTheirVerdictAndAUnitNormal) {
+  const std::string a = "[[1e200,2e200],[0,1.7e308],[0,0]]";
+  const std::string b = "[[1e200,2e200],[0,1.7e308],[3,-3.7731483778295826e148],[0,-1]]";
+  const CliResult r = run_cli(
+      {"overlap", "-"},
+      "{\"a\": " + a + ", \"b\": " + b + "}\n{\"a\": " + b + ", \"b\": " + a +
+          "}\n"
+          "{\"a\": [[0,2],[3,0],[0,0],[3e-300,5e-324]], "
+          "\"b\": [[-1e200,9.999999999999999e-19],[2,-1.4898344417001195e-21],[0.001,-1]]}\n");
+  const auto out = parse_lines(r.out);
+  EXPECT_EQ(r.code, 0);
+  ASSERT_EQ(out.size(), 3u);
+  EXPECT_TRUE(out[0]["overlap"].get<bool>());
+  EXPECT_TRUE(out[1]["overlap"].get<bool>());
+  EXPECT_FALSE(out[2]["overlap"].get<bool>());
+  EXPECT_EQ(out[2]["distance"].get<Real>(), 1.4898344417001195e-21);
+  const Real nx = out[2]["normal"][0].get<Real>(), ny = out[2]["normal"][1].get<Real>();
+  EXPECT_NEAR(std::hypot(nx, ny), 1, 1e-15);
+  EXPECT_EQ(ny, -1);
 }
 
 TEST(OverlapCommand, BadLinesAreReportedAndTheRestAnswered) {

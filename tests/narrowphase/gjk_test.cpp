@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "mink/error.hpp"
 #include "mink/geometry/orientation.hpp"
 #include "mink/narrowphase/gjk_distance.hpp"
 #include "mink/narrowphase/gjk_overlap.hpp"
@@ -253,6 +254,35 @@ TEST(GjkDistance, TouchingAndOverlappingReportZero) {
   stale.count = 3;
   stale.index_a = {9, 1, 2};
   EXPECT_NEAR(gjk_distance(a, kIdentity, a, pose_at(3, 4), &stale).distance, apart.distance, 1e-14);
+}
+
+// A gap far below unit size: its square underflows, so |gap| and gap / |gap| are taken from
+// the gap scaled by a power of two (the overlap_line harness found a normal 1e-5 off unit
+// length at a gap of 1e-161).
+TEST(GjkDistance, TinyGapsHaveAnExactDistanceAndAUnitNormal) {
+  // a's top edge and b's bottom edge on y = 0, so b can be moved a subnormal gap up.
+  const std::vector<Vec2> below = {Vec2(0, -1), Vec2(1, -1), Vec2(1, 0), Vec2(0, 0)};
+  const std::vector<Vec2> above = {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)};
+  const PreparedHull a = hull_of(below), b = hull_of(above);
+  for (const Real gap : {1e-161, 3e-200, 0x1p-1000, 5e-310}) {
+    SCOPED_TRACE(gap);
+    const mink::DistanceResult r = gjk_distance(a, kIdentity, b, pose_at(0.25, gap));
+    ASSERT_FALSE(r.overlap);
+    EXPECT_EQ(r.distance, gap);
+    EXPECT_EQ(r.normal, Vec2(0, 1));
+    const mink::BruteDistance brute =
+        mink::hull_distance_brute(below, translated(above, Vec2(0.25, gap)));
+    EXPECT_EQ(brute.distance, gap);
+    EXPECT_EQ(brute.normal, Vec2(0, 1));
+  }
+}
+
+// Every vertex finite, two of them farther apart than a double holds: no edge or area of the
+// hull can be computed, so it is refused (it used to reach the exact predicate as infinities).
+TEST(PreparedHullLimits, AHullWiderThanADoubleIsRefused) {
+  const mink::ConvexHull wide = mink::ConvexHull::from_ccw_vertices(
+      std::vector<Vec2>{Vec2(-1.7e308, 0), Vec2(1.7e308, 0), Vec2(0, 1)});
+  EXPECT_THROW(PreparedHull{wide}, mink::InvalidArgumentError);
 }
 
 // ---- Penetration depth ---------------------------------------------------------------------
