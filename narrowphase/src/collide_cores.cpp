@@ -23,6 +23,60 @@ Vec2 in_a(const Core& core, std::size_t i, bool on_b, const Pose& b_to_a) {
   return on_b ? b_to_a.apply(core.point(i)) : core.point(i);
 }
 
+// Face `index` of the segment p0 -> p1 (A's frame), whose face 0 has the unit normal `normal0`.
+ReferenceFace segment_face(const Vec2& p0, const Vec2& p1, std::uint32_t index, bool on_b,
+                           const Vec2& normal0) {
+  ReferenceFace f;
+  f.index = index;
+  f.on_b = on_b;
+  f.v1 = index == 0 ? p0 : p1;
+  f.v2 = index == 0 ? p1 : p0;
+  f.normal = index == 0 ? normal0 : Vec2(-normal0);
+  return f;
+}
+
+// The faces of the two cores in A's frame, each segment's normal found once per pair rather
+// than at every look at a face (a pair looks at each face up to three times). Face 1 of a
+// segment is face 0 reversed, whose normal is the same bits negated.
+class PairFaces {
+ public:
+  PairFaces(const Core& a, const Core& b, const Pose& b_to_a)
+      : a_(a),
+        b_(b),
+        b_to_a_(b_to_a),
+        normal_a_(segment_normal(a, false)),
+        normal_b_(segment_normal(b, true)) {}
+
+  ReferenceFace face(std::uint32_t index, bool on_b) const {
+    const Core& core = on_b ? b_ : a_;
+    if (core.hull != nullptr) return core_face(core, index, on_b, b_to_a_);
+    return segment_face(in_a(core, 0, on_b, b_to_a_), in_a(core, 1, on_b, b_to_a_), index, on_b,
+                        on_b ? normal_b_ : normal_a_);
+  }
+
+  // Only the normal of face `index`.
+  Vec2 normal(std::uint32_t index, bool on_b) const {
+    const Core& core = on_b ? b_ : a_;
+    if (core.hull != nullptr) {
+      const Vec2& local = core.hull->normals()[index];
+      return on_b ? b_to_a_.rotation.apply(local) : local;
+    }
+    const Vec2& n = on_b ? normal_b_ : normal_a_;
+    return index == 0 ? n : Vec2(-n);
+  }
+
+ private:
+  Vec2 segment_normal(const Core& core, bool on_b) const {
+    if (core.hull != nullptr || core.size() != 2) return Vec2(0, 0);
+    return unit_right_normal(in_a(core, 0, on_b, b_to_a_), in_a(core, 1, on_b, b_to_a_));
+  }
+
+  const Core& a_;
+  const Core& b_;
+  const Pose& b_to_a_;
+  Vec2 normal_a_, normal_b_;
+};
+
 // The largest separation of the other core's points beyond a face, over every face of both
 // (-infinity when neither core has faces): the separating-axis test, exact in 2D for overlap
 // depth because A - B has exactly the faces of A and B.
@@ -32,7 +86,7 @@ struct BestFace {
   bool on_b = false;
 };
 
-BestFace best_face(const Core& a, const Core& b, const Pose& b_to_a) {
+BestFace best_face(const Core& a, const Core& b, const Pose& b_to_a, const PairFaces& faces_of) {
   BestFace best;
   if (a.hull != nullptr && b.hull != nullptr) {
     const FaceSeparation on_a = max_face_separation(*a.hull, *b.hull, b_to_a);
@@ -46,7 +100,7 @@ BestFace best_face(const Core& a, const Core& b, const Pose& b_to_a) {
     const Core& other = on_b ? a : b;
     const std::size_t faces = face_count(owner);
     for (std::uint32_t i = 0; i < faces; ++i) {
-      const ReferenceFace f = core_face(owner, i, on_b, b_to_a);
+      const ReferenceFace f = faces_of.face(i, on_b);
       Real deepest = std::numeric_limits<Real>::infinity();
       for (std::size_t j = 0; j < other.size(); ++j) {
         deepest = std::min(deepest, f.normal.dot(in_a(other, j, !on_b, b_to_a) - f.v1));
@@ -58,7 +112,7 @@ BestFace best_face(const Core& a, const Core& b, const Pose& b_to_a) {
 }
 
 // The face (of either core) whose outward normal is closest to `normal` (A towards B).
-ReferenceFace most_aligned_face(const Core& a, const Core& b, const Pose& b_to_a,
+ReferenceFace most_aligned_face(const Core& a, const Core& b, const PairFaces& faces_of,
                                 const Vec2& normal, Real& alignment) {
   ReferenceFace best;
   alignment = -2;
@@ -68,10 +122,7 @@ ReferenceFace most_aligned_face(const Core& a, const Core& b, const Pose& b_to_a
     const Vec2 towards = on_b ? Vec2(-normal) : normal;
     const std::size_t faces = face_count(owner);
     for (std::uint32_t i = 0; i < faces; ++i) {
-      const Vec2 n = owner.hull != nullptr ? (on_b ? b_to_a.rotation.apply(owner.hull->normals()[i])
-                                                   : owner.hull->normals()[i])
-                                           : core_face(owner, i, on_b, b_to_a).normal;
-      const Real dot = n.dot(towards);
+      const Real dot = faces_of.normal(i, on_b).dot(towards);
       if (dot > alignment) {
         alignment = dot;
         best.index = i;
@@ -79,7 +130,7 @@ ReferenceFace most_aligned_face(const Core& a, const Core& b, const Pose& b_to_a
       }
     }
   }
-  if (alignment > -2) best = core_face(best.on_b ? b : a, best.index, best.on_b, b_to_a);
+  if (alignment > -2) best = faces_of.face(best.index, best.on_b);
   return best;
 }
 
@@ -184,10 +235,7 @@ ReferenceFace core_face(const Core& core, std::uint32_t index, bool on_b, const 
   }
   const Vec2 p0 = in_a(core, 0, on_b, b_to_a);
   const Vec2 p1 = in_a(core, 1, on_b, b_to_a);
-  f.v1 = index == 0 ? p0 : p1;
-  f.v2 = index == 0 ? p1 : p0;
-  f.normal = unit_right_normal(f.v1, f.v2);
-  return f;
+  return segment_face(p0, p1, index, on_b, unit_right_normal(p0, p1));
 }
 
 Manifold collide_on_face(const Core& a, const Pose& pose_a, const Core& b, const Pose& pose_b,
@@ -199,8 +247,9 @@ Manifold collide_cores(const Core& a, const Pose& pose_a, const Core& b, const P
                        Real speculative_distance) {
   const Pose b_to_a = relative_pose(pose_a, pose_b);
   const Real radii = a.radius + b.radius;
+  const PairFaces faces_of(a, b, b_to_a);
   // A face separation bounds the distance from below: a cheap early out for far pairs.
-  const BestFace sat = best_face(a, b, b_to_a);
+  const BestFace sat = best_face(a, b, b_to_a, faces_of);
   if (sat.separation - radii > speculative_distance) return {};
   const CoreFrame frame(a, b, b_to_a);
   const LocalDistance gjk = distance_loop(frame, nullptr);
@@ -212,7 +261,7 @@ Manifold collide_cores(const Core& a, const Pose& pose_a, const Core& b, const P
     // Two points when the nearest features are a face and what lies on it: then the GJK normal
     // is that face's normal (up to rounding).
     Real alignment = -2;
-    const ReferenceFace face = most_aligned_face(a, b, b_to_a, normal, alignment);
+    const ReferenceFace face = most_aligned_face(a, b, faces_of, normal, alignment);
     if (alignment >= 1 - 1e-10) {
       const Manifold m = clip_to_face(a, pose_a, b, b_to_a, face, speculative_distance);
       const Real tolerance = 1e-10 * (gjk.distance + (face.v2 - face.v1).norm() + radii);
@@ -246,7 +295,7 @@ Manifold collide_cores(const Core& a, const Pose& pose_a, const Core& b, const P
   }
   const Real separation = sat.separation - radii;
   if (separation > speculative_distance) return {};
-  const ReferenceFace face = core_face(sat.on_b ? b : a, sat.index, sat.on_b, b_to_a);
+  const ReferenceFace face = faces_of.face(sat.index, sat.on_b);
   Manifold m = clip_to_face(a, pose_a, b, b_to_a, face, speculative_distance);
   const Real tolerance = 1e-10 * (std::abs(sat.separation) + (face.v2 - face.v1).norm() + radii);
   if (m.point_count > 0 && min_separation(m) <= separation + tolerance) return m;
