@@ -26,6 +26,14 @@ inline bool within_world(const Vec2& v) {
          std::abs(v.y()) <= max_world_coordinate;
 }
 
+// Finite and within four times max_world_coordinate on each axis: where what a body carries
+// can reach. Its origin lies within max_world_coordinate, its shapes' points and its centre of
+// mass within that of the origin, and a radius adds at most that again (as a body's extent).
+inline bool within_reach(const Vec2& v) {
+  return finite(v) && std::abs(v.x()) <= 4 * max_world_coordinate &&
+         std::abs(v.y()) <= 4 * max_world_coordinate;
+}
+
 // Finite and within max_setting_magnitude: a velocity (each component), an angular velocity.
 inline bool within_settings(Real v) {
   return std::isfinite(v) && std::abs(v) <= max_setting_magnitude;

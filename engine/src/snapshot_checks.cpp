@@ -156,8 +156,9 @@ void check_body(const Body& body, const std::string& what, ByteReader& in) {
   if (!all_finite(finite_part)) in.fail(what + " holds a non-finite value");
   if (body.type > BodyType::dynamic) in.fail(what + " has no body type");
   // Shape points and mass centres lie within max_world_coordinate of their body's origin,
-  // so its extent reaches at most a few times that far.
-  if (!within_world(body.center) || !within_world(body.origin) ||
+  // so its centre and extent reach at most a few times that far (a shape far out moves the
+  // centre of an origin near the limit past it).
+  if (!within_reach(body.center) || !within_world(body.origin) ||
       !within_world(body.previous_origin) || !within_world(body.local_center) ||
       body.extent > 4 * max_world_coordinate) {
     in.fail(what + " lies or reaches beyond max_world_coordinate");
@@ -223,7 +224,7 @@ void check_shape(const Shape& shape, const std::string& what, ByteReader& in) {
         shape.aabb.lower.y() <= shape.aabb.upper.y())) {
     in.fail(what + "'s bounding box is inside out");
   }
-  if (!within_world(shape.aabb.lower) || !within_world(shape.aabb.upper)) {
+  if (!within_reach(shape.aabb.lower) || !within_reach(shape.aabb.upper)) {
     in.fail(what + " reaches beyond max_world_coordinate");
   }
   check_geometry(shape.geometry, what, in);
@@ -255,12 +256,12 @@ void check_contact(const Contact& c, const std::string& what, ByteReader& in) {
     in.fail(what + " holds a non-finite or negative value");
   }
   const Manifold& m = c.manifold;
-  bool in_world = within_world(c.approach_point) && within_world(c.cache.relative.position) &&
+  bool in_world = within_reach(c.approach_point) && within_reach(c.cache.relative.position) &&
                   unit(c.cache.relative.rotation);
   for (int k = 0; k < 2; ++k) {
-    in_world = in_world && within_world(m.points[k].point) &&
-               std::abs(m.points[k].separation) <= max_world_coordinate &&
-               within_world(c.cache.on_a[k]) && within_world(c.cache.on_b[k]);
+    in_world = in_world && within_reach(m.points[k].point) &&
+               std::abs(m.points[k].separation) <= 4 * max_world_coordinate &&
+               within_reach(c.cache.on_a[k]) && within_reach(c.cache.on_b[k]);
   }
   if (!in_world) in.fail(what + " reaches beyond max_world_coordinate");
   if ((m.point_count > 0 && !unit(m.normal)) || (c.cache.valid && !unit(c.cache.normal))) {

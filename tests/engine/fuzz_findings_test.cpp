@@ -285,6 +285,33 @@ TEST(FuzzFindings, CoordinatesBeyondTheWorldAreRefused) {
   expect_steps_finite(world, 60);
 }
 
+// The World API fuzzer found a polygon whose points were within max_world_coordinate of its
+// body's origin until ShapeDef.scale took them to 1e18 m; its body's centre went there too,
+// and the world's own snapshot was then refused. Such a scale is refused now. A body whose
+// origin and shape are each within the limit can still have its centre, boxes and contacts
+// beyond it (up to a few times as far): its snapshot restores.
+TEST(FuzzFindings, ScaledPolygonsStayWithinTheWorldAndFarCentresRestore) {
+  World world;
+  BodyDef def;
+  def.type = BodyType::dynamic;
+  const BodyId body = world.create_body(def);
+  ShapeDef scaled = ShapeDef::box(0.5, 0.5, Vec2(-1e14, 0));
+  scaled.scale = ShapeScale{Vec2(0, 0), Vec2(1e4, 1)};
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.create_shape(body, scaled);
+            }).find("ShapeDef.scale"),
+            std::string::npos);
+  EXPECT_TRUE(world.body_shapes(body).empty());
+
+  def.position = Vec2(0.9 * max_world_coordinate, 0);
+  const BodyId far = world.create_body(def);
+  world.create_shape(far, ShapeDef::circle(1, Vec2(0.9 * max_world_coordinate, 0)));
+  ASSERT_GT(world.world_center(far).x(), max_world_coordinate);
+  const std::vector<std::uint8_t> bytes = world.snapshot();
+  const World copy = World::from_snapshot(bytes);
+  EXPECT_EQ(copy.state_hash(), world.state_hash());
+}
+
 // A velocity of 1e300 m/s, or the push of a force that size, was taken (it is finite), but the
 // single-precision solver turned it infinite and the world NaN in a step; a kinematic body,
 // which moves by its own velocity in double precision, spun at 1e300 rad/s turned NaN at once;
