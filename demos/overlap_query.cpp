@@ -21,9 +21,8 @@ PreparedHull hull_named(std::span<const Vec2> points, const char* name) {
     return PreparedHull(build_hull(points, HullAlgorithm::monotone_chain));
   } catch (const DegenerateInputError& error) {
     throw DegenerateInputError(std::string(name) + ": " + error.what());
-  } catch (const NonFiniteInputError& error) {
-    throw InvalidArgumentError(std::string(name) + ": " + error.what());
-  } catch (const InvalidArgumentError& error) {
+  } catch (const Error& error) {
+    // Non-finite points, or a hull wider than a double.
     throw InvalidArgumentError(std::string(name) + ": " + error.what());
   }
 }
@@ -112,17 +111,16 @@ OverlapAnswer answer_overlap(std::span<const Vec2> a_points, std::span<const Vec
   const int scale = magnitude > std::ldexp(Real(1), kLargestUnscaledExponent + 1)
                         ? std::ilogb(magnitude) - kLargestUnscaledExponent
                         : 0;
-  const auto scaled = [scale](std::span<const Vec2> points) {
-    std::vector<Vec2> result;
-    result.reserve(points.size());
-    for (const Vec2& p : points)
-      result.emplace_back(std::ldexp(p.x(), -scale), std::ldexp(p.y(), -scale));
-    return result;
+  // Scaling by 2^0 changes nothing, so every query takes the same path.
+  const auto prepared = [scale](std::span<const Vec2> points, const char* name) {
+    std::vector<Vec2> scaled;
+    scaled.reserve(points.size());
+    for (const Vec2& p : points) {
+      scaled.emplace_back(std::ldexp(p.x(), -scale), std::ldexp(p.y(), -scale));
+    }
+    return hull_named(scaled, name);
   };
-  OverlapAnswer answer =
-      scale == 0
-          ? measure_overlap(hull_named(a_points, "a"), hull_named(b_points, "b"))
-          : measure_overlap(hull_named(scaled(a_points), "a"), hull_named(scaled(b_points), "b"));
+  OverlapAnswer answer = measure_overlap(prepared(a_points, "a"), prepared(b_points, "b"));
   answer.distance = std::ldexp(answer.distance, scale);
   answer.depth = std::ldexp(answer.depth, scale);
   // Hulls at opposite ends of the doubles' range have a distance (or a depth) beyond a double:

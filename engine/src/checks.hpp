@@ -20,18 +20,21 @@ inline bool finite(const Vec2& v) {
   return std::isfinite(v.x()) && std::isfinite(v.y());
 }
 
+// Finite and within `limit` of the origin on each axis.
+inline bool within(const Vec2& v, Real limit) {
+  return finite(v) && std::abs(v.x()) <= limit && std::abs(v.y()) <= limit;
+}
+
 // Finite and within max_world_coordinate of the origin on each axis.
 inline bool within_world(const Vec2& v) {
-  return finite(v) && std::abs(v.x()) <= max_world_coordinate &&
-         std::abs(v.y()) <= max_world_coordinate;
+  return within(v, max_world_coordinate);
 }
 
 // Finite and within four times max_world_coordinate on each axis: where what a body carries
 // can reach. Its origin lies within max_world_coordinate, its shapes' points and its centre of
 // mass within that of the origin, and a radius adds at most that again (as a body's extent).
 inline bool within_reach(const Vec2& v) {
-  return finite(v) && std::abs(v.x()) <= 4 * max_world_coordinate &&
-         std::abs(v.y()) <= 4 * max_world_coordinate;
+  return within(v, 4 * max_world_coordinate);
 }
 
 // Finite and within max_setting_magnitude: a velocity (each component), an angular velocity.

@@ -144,20 +144,9 @@ void check_shape_def(const ShapeDef& def) {
           "ShapeDef.scale applies to polygons only, not to a " + std::string(to_string(def.type)));
   require(!def.loop || def.type == ShapeType::chain, "ShapeDef.loop applies to chains only");
   switch (def.type) {
-    case ShapeType::polygon: {
-      const ConvexHull hull = make_shape_hull(def);  // throws the hull errors
-      if (def.scale) {
-        // Points within the limit, scaled, may not be.
-        for (const Vec2& v : hull.vertices()) {
-          require(detail::within_world(v),
-                  "ShapeDef.scale (factors " + number(def.scale->factor.x()) + ", " +
-                      number(def.scale->factor.y()) +
-                      ") takes the polygon's points beyond max_world_coordinate (1e15 m) of its "
-                      "body's origin");
-        }
-      }
+    case ShapeType::polygon:
+      make_shape_hull(def);  // throws the hull errors
       break;
-    }
     case ShapeType::circle:
       check_point_count(def, 1);
       check_points_finite(def.points);
@@ -211,8 +200,17 @@ ConvexHull make_shape_hull(const ShapeDef& def) {
     if (!std::isfinite(def.scale->fixed_point.x()) || !std::isfinite(def.scale->fixed_point.y())) {
       throw InvalidArgumentError("ShapeDef.scale.fixed_point must be finite");
     }
-    return build_hull(scale_about(def.points, def.scale->fixed_point, def.scale->factor),
-                      def.algorithm);
+    const std::vector<Vec2> scaled =
+        scale_about(def.points, def.scale->fixed_point, def.scale->factor);
+    // Points within the limit, scaled, may not be.
+    for (const Vec2& v : scaled) {
+      require(!detail::finite(v) || detail::within_world(v),
+              "ShapeDef.scale (factors " + number(def.scale->factor.x()) + ", " +
+                  number(def.scale->factor.y()) +
+                  ") takes the polygon's points beyond max_world_coordinate (1e15 m) of its "
+                  "body's origin");
+    }
+    return build_hull(scaled, def.algorithm);
   }
   return build_hull(def.points, def.algorithm);
 }

@@ -138,20 +138,23 @@ class PairFrame {
 // huge or tiny: directions keep their sign tests meaningful (no overflow to infinity, no
 // underflow to zero in dot products) at any coordinates. Ordinary magnitudes pass unchanged,
 // which keeps the common case free of libm calls. Zero stays zero.
-inline Vec2 rescaled_direction(const Vec2& v) {
+// The power of two rescaled_direction divides by: 0 for ordinary magnitudes, zero and
+// non-finite vectors.
+inline int rescale_exponent(const Vec2& v) {
   const Real m = std::max(std::abs(v.x()), std::abs(v.y()));
-  if ((m >= 0x1p-200 && m <= 0x1p200) || m == 0 || !std::isfinite(m)) return v;
-  const int e = std::ilogb(m);
-  return Vec2(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e));
+  if ((m >= 0x1p-200 && m <= 0x1p200) || m == 0 || !std::isfinite(m)) return 0;
+  return std::ilogb(m);
+}
+
+inline Vec2 rescaled_direction(const Vec2& v) {
+  const int e = rescale_exponent(v);
+  return e == 0 ? v : Vec2(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e));
 }
 
 // |v| without the squares underflowing or overflowing far from unit size; exactly v.norm()
 // between 2^-200 and 2^200.
 inline Real rescaled_norm(const Vec2& v) {
-  const Real m = std::max(std::abs(v.x()), std::abs(v.y()));
-  if ((m >= 0x1p-200 && m <= 0x1p200) || m == 0 || !std::isfinite(m)) return v.norm();
-  const int e = std::ilogb(m);
-  return std::ldexp(Vec2(std::ldexp(v.x(), -e), std::ldexp(v.y(), -e)).norm(), e);
+  return std::ldexp(rescaled_direction(v).norm(), rescale_exponent(v));
 }
 
 // v / |v|, likewise safe far from unit size.
