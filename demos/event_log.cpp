@@ -47,6 +47,7 @@ void EventLog::write_step(const World& world) {
   for (const SensorBeginEvent& event : world.sensor_begin_events()) sensor_begin(world, event);
   for (const SensorEndEvent& event : world.sensor_end_events()) sensor_end(world, event);
   for (const JointBreakEvent& event : world.joint_break_events()) joint_break(world, event);
+  for (const BodyStoppedEvent& event : world.body_stopped_events()) body_stopped(event);
 }
 
 void EventLog::close() {
@@ -103,6 +104,18 @@ void EventLog::joint_break(const World& world, const JointBreakEvent& event) {
   }
   line.json["force"] = xy(event.force);
   line.json["torque"] = event.torque;
+  write_line(line);
+}
+
+// A body made during the run has no scene index: the line then names none.
+void EventLog::body_stopped(const BodyStoppedEvent& event) {
+  Line line;
+  line.json["step"] = step_;
+  line.json["type"] = "body_stopped";
+  if (const auto index = body_indices_.find(key(event.body)); index != body_indices_.end()) {
+    line.json["body"] = index->second;
+  }
+  line.json["diverged"] = event.diverged;
   write_line(line);
 }
 

@@ -21,6 +21,8 @@ namespace mink::cli {
 // sensor's), and "hit" (with "point", "normal" and "speed", the approach speed in m/s).
 // "joint_break" lines name a joint instead of shapes: "joint" (index into the scene's joints
 // array), its "body_a" and "body_b", "force" [x, y] (N, on body B) and "torque" (N m).
+// "body_stopped" lines name a body the step stopped because its solve diverged ("body", and
+// "diverged": whether on it, or on a body joined to it; World::body_stopped_events).
 //
 // Each event type has its own member function filling one line: pair_line() with its shapes,
 // its own fields, write_line().
@@ -49,6 +51,7 @@ class EventLog {
   void sensor_end(const World& world, const SensorEndEvent& event);
   void hit(const World& world, const ContactHitEvent& event);
   void joint_break(const World& world, const JointBreakEvent& event);
+  void body_stopped(const BodyStoppedEvent& event);
 
   // A line with the fields every event has: step, type, the two shapes and their bodies.
   Line pair_line(const World& world, std::string_view type, ShapeId a, ShapeId b) const;

@@ -206,6 +206,7 @@ int run_scene(const RunOptions& options, Streams streams) {
   Progress progress(streams.err, steps);
   double total_ms = 0;
   std::size_t contacts_sum = 0;
+  long long stopped_steps = 0;  // steps whose solve diverged (World::body_stopped_events)
   const auto started = std::chrono::steady_clock::now();
   char line[256];
   for (long long i = 1; i <= steps; ++i) {
@@ -217,6 +218,18 @@ int run_scene(const RunOptions& options, Streams streams) {
     total_ms += ms;
     const StepCounters& c = world.counters();
     contacts_sum += c.touching_contacts;
+    if (const auto stopped = world.body_stopped_events(); !stopped.empty()) {
+      // Said once as it happens, and counted in the summary: the run goes on.
+      if (stopped_steps++ == 0) {
+        const auto first = std::find_if(stopped.begin(), stopped.end(),
+                                        [](const BodyStoppedEvent& e) { return e.diverged; });
+        streams.err << "mink: warning: step " << world.step_count()
+                    << ": the solve diverged on body slot " << first->body.index << "; "
+                    << stopped.size()
+                    << " bodies put back where the step began, at rest (constraints beyond "
+                       "the single-precision solver: see BodyStoppedEvent)\n";
+      }
+    }
     if (stats) {
       const StepProfile& p = world.profile();
       std::snprintf(
@@ -253,6 +266,10 @@ int run_scene(const RunOptions& options, Streams streams) {
       world.body_count(), world.counters().awake_bodies, world.counters().touching_contacts,
       static_cast<double>(contacts_sum) / static_cast<double>(steps));
   streams.out << line;
+  if (stopped_steps > 0) {
+    streams.out << "diverged: the solve diverged in " << stopped_steps
+                << " steps; their bodies were stopped (warning above)\n";
+  }
   if (png_sink) {
     streams.out << "frames: " << png_sink->frames_written() << " PNG files in "
                 << (out / "frames").string() << '\n';
@@ -309,8 +326,8 @@ Action add_run_command(CLI::App& app, Streams streams) {
       ->needs(trace);
   command->add_option("--events", options->events,
                       "events as JSON Lines: step, type (contact_begin, contact_end, hit, "
-                      "sensor_begin, sensor_end, joint_break), shape_a, shape_b or joint, "
-                      "body_a, body_b");
+                      "sensor_begin, sensor_end, joint_break, body_stopped), shape_a, shape_b "
+                      "or joint or body, body_a, body_b");
   command->add_option("--save", options->save,
                       "write the final world as a scene file FILE, and its solver state as "
                       "FILE.state beside it: `mink run FILE` resumes exactly");

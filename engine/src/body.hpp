@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -65,6 +66,14 @@ inline void place_center(Body& b) {
 }
 inline void place_origin(Body& b) {
   b.origin = b.center - on_grid(b.rotation.apply(b.local_center));
+}
+
+// `r` turned further by the solver's rotation since the step began, (qc, qs), renormalised.
+inline Rotation turned(const Rotation& r, Real qc, Real qs) {
+  const Real c = qc * r.cos - qs * r.sin;
+  const Real s = qs * r.cos + qc * r.sin;
+  const Real inv_length = 1 / std::sqrt(c * c + s * s);
+  return {c * inv_length, s * inv_length};
 }
 
 // Moves in a step: awake, enabled and not static.

@@ -41,6 +41,10 @@ struct SolverBodyInfo {
 struct SolverBodyParams {
   SolverReal dvx = 0, dvy = 0, dw = 0;
   SolverReal linear_damping = 1, angular_damping = 1;  // factors 1 / (1 + h * damping)
+  // What the divergence check (divergence.cpp) needs of the body record, so that it reads
+  // none in the common case: whether the body is dynamic, and whether its centre of mass lies
+  // more than half max_world_coordinate from its origin.
+  bool dynamic = false, far_mass_centre = false;
 };
 
 // Constraints are built once per contact per step, each field written: no default values,

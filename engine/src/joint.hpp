@@ -36,6 +36,10 @@ struct JointBodies {
   std::uint8_t color = kNoColor;
 };
 
+// Forgets the impulses a joint warm starts from, and its last reaction (divergence.cpp): its
+// bodies were stopped where the step began.
+void forget_impulses(Joint& joint);
+
 // A kind's end-of-step bookkeeping, free coordinate and its rate: kinds without one (a weld,
 // a motor joint) leave the function out and read 0.
 template <typename Kind>

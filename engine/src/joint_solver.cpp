@@ -386,6 +386,14 @@ void WorldState::finish_joint(std::uint32_t k, Real inv_h) {
   const std::uint32_t j = joint_order[k];
   Joint& joint = joints[j];
   joint_stages.store_row(joint_position[k], joint);
+  bool stopped_body = false;
+  for (int b = 0; b < joint.body_count; ++b) {
+    stopped_body = stopped_body || stopped_in_step(body_solver_index[joint.body[b]]);
+  }
+  if (stopped_body) {
+    detail::forget_impulses(joint);
+    return;
+  }
   // A revolute joint's force from the step's substep length rather than its frame, which a
   // pin's record does not have prepared; it reads only the bodies' rotations to finish (a
   // large net's joints are revolute).

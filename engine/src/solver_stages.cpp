@@ -100,6 +100,8 @@ void WorldState::prepare_contacts() {
             std::clamp(h * b.inv_inertia * b.torque, -2 * max_angular_speed, 2 * max_angular_speed);
         p.linear_damping = 1 / (1 + h * b.linear_damping);
         p.angular_damping = 1 / (1 + h * b.angular_damping);
+        p.dynamic = true;
+        p.far_mass_centre = b.local_center.norm() > max_world_coordinate / 2;
       }
       solver_params[k] = p;
     }
@@ -271,10 +273,7 @@ void WorldState::write_back(std::uint32_t solver_index) {
     b.angular_velocity = sb.w;
     b.center += detail::on_grid(Vec2(sb.dpx, sb.dpy));
   }
-  const Real c = qc * b.rotation.cos - qs * b.rotation.sin;
-  const Real s = qs * b.rotation.cos + qc * b.rotation.sin;
-  const Real inv_length = 1 / std::sqrt(c * c + s * s);
-  b.rotation = {c * inv_length, s * inv_length};
+  b.rotation = detail::turned(b.rotation, qc, qs);
   detail::place_origin(b);
   b.force = Vec2(0, 0);
   b.torque = 0;
@@ -292,22 +291,27 @@ void WorldState::solve() {
   settings.joint_iterations = def.joint_iterations;
   contact_solver.solve(solver_bodies, solver_params, settings,
                        joint_stages.empty() ? nullptr : &joint_stages, tasks);
+  stop_diverged();
 
   // Impulses back to the contacts and poses back to the bodies, each its own record, in
   // parallel, which also marks the hits (the shapes met fast and the contact pushed: a
   // speculative point that never closed does not count); their events after, in constraint
   // order, from the marks rather than from every contact again.
   hit_marks.assign(constraint_contacts.size(), 0);
-  tasks.parallel_for(static_cast<std::uint32_t>(constraint_contacts.size()), 256,
-                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-                       for (std::uint32_t r = begin; r < end; ++r) {
-                         Contact& c = contacts[constraint_contacts[r]];
-                         contact_solver.impulses(r, c.normal_impulse, c.tangent_impulse);
-                         hit_marks[r] = c.hit_events &&
-                                        c.approach_speed > def.hit_event_threshold &&
-                                        std::max(c.normal_impulse[0], c.normal_impulse[1]) > 0;
-                       }
-                     });
+  tasks.parallel_for(
+      static_cast<std::uint32_t>(constraint_contacts.size()), 256,
+      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+        for (std::uint32_t r = begin; r < end; ++r) {
+          Contact& c = contacts[constraint_contacts[r]];
+          contact_solver.impulses(r, c.normal_impulse, c.tangent_impulse);
+          if (stopped_in_step(constraint_bodies[r].a) || stopped_in_step(constraint_bodies[r].b)) {
+            c.normal_impulse[0] = c.normal_impulse[1] = 0;
+            c.tangent_impulse[0] = c.tangent_impulse[1] = 0;
+          }
+          hit_marks[r] = c.hit_events && c.approach_speed > def.hit_event_threshold &&
+                         std::max(c.normal_impulse[0], c.normal_impulse[1]) > 0;
+        }
+      });
   for (std::uint32_t r = 0; r < constraint_contacts.size(); ++r) {
     if (hit_marks[r] == 0) continue;
     const Contact& c = contacts[constraint_contacts[r]];

@@ -193,6 +193,9 @@ std::span<const SensorEndEvent> World::sensor_end_events() const noexcept {
 std::span<const BodyMoveEvent> World::body_move_events() const noexcept {
   return state_->move_events;
 }
+std::span<const BodyStoppedEvent> World::body_stopped_events() const noexcept {
+  return state_->stopped_events;
+}
 const StepCounters& World::counters() const noexcept {
   return state_->counters;
 }
@@ -212,6 +215,7 @@ void WorldState::clear_events() {
   sensor_end_events.clear();
   move_events.clear();
   joint_break_events.clear();
+  stopped_events.clear();
 }
 
 // One step: pair update -> narrowphase -> islands and sleep -> soft-step solver -> continuous

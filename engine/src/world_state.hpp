@@ -106,6 +106,7 @@ struct WorldState {
   std::vector<SensorEndEvent> sensor_end_events;
   std::vector<BodyMoveEvent> move_events;
   std::vector<JointBreakEvent> joint_break_events;
+  std::vector<BodyStoppedEvent> stopped_events;
   std::vector<std::uint32_t> fell_asleep;  // bodies the last step put to sleep
   StepCounters counters;
   StepProfile profile;
@@ -133,6 +134,9 @@ struct WorldState {
   // whole turns (delta_angle), taken once per body rather than once per joint.
   std::vector<Real> solver_turned;
   std::vector<std::uint8_t> hit_marks;  // per constraint: whether it is a hit (solve)
+  // Per solver body, this step: 1 where the solve diverged on it, 2 where it is stopped with
+  // one that did (stop_diverged); empty when every solve held.
+  std::vector<std::uint8_t> stopped;
   std::vector<detail::SolverBodyInfo> solver_info;
   std::vector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
   std::vector<detail::ConstraintBodies> constraint_bodies, sorted_bodies;
@@ -237,6 +241,15 @@ struct WorldState {
   void solve();
   // Solver body `solver_index`'s velocity and pose back into its body record.
   void write_back(std::uint32_t solver_index);
+  // divergence.cpp: after the solve, the bodies it diverged on, and those joined to them,
+  // back to where the step began, at rest; and whether a solver body was so stopped.
+  void stop_diverged();
+  bool solve_diverged(std::uint32_t solver_index, Real max_speed, Real max_angular_speed) const;
+  bool stopped_in_step(std::int32_t solver_index) const {
+    // The unmoving solver body (still_body) lies past the moving ones, and is never stopped.
+    return solver_index >= 0 && static_cast<std::size_t>(solver_index) < stopped.size() &&
+           stopped[static_cast<std::size_t>(solver_index)] != 0;
+  }
   void finish_body(std::uint32_t solver_index);
   void finish_step();
   // continuous.cpp (before finish_step: it needs the step's solver records)

@@ -42,6 +42,12 @@ struct BodyMoveRecord {
   std::uint64_t user_data;
 };
 
+struct BodyStoppedRecord {
+  std::int32_t body;
+  bool diverged;
+  std::uint64_t user_data;
+};
+
 namespace {
 
 std::int32_t body_of(const World& world, ShapeId shape) {
@@ -143,6 +149,15 @@ py::array_t<BodyMoveRecord> body_moves(const World& world) {
                                  });
 }
 
+py::array_t<BodyStoppedRecord> body_stops(const World& world) {
+  return records<BodyStoppedRecord>(world.body_stopped_events(),
+                                    [](const BodyStoppedEvent& e, BodyStoppedRecord& r) {
+                                      r.body = static_cast<std::int32_t>(e.body.index);
+                                      r.diverged = e.diverged;
+                                      r.user_data = e.user_data;
+                                    });
+}
+
 }  // namespace
 
 void bind_events(WorldClass& world) {
@@ -153,6 +168,7 @@ void bind_events(WorldClass& world) {
   PYBIND11_NUMPY_DTYPE(SensorRecord, sensor, visitor, sensor_body, visitor_body);
   PYBIND11_NUMPY_DTYPE(JointBreakRecord, joint, body_a, body_b, force, torque, user_data);
   PYBIND11_NUMPY_DTYPE(BodyMoveRecord, body, position, angle, fell_asleep, user_data);
+  PYBIND11_NUMPY_DTYPE(BodyStoppedRecord, body, diverged, user_data);
   world
       .def(
           "contact_begin_events", [](WorldHandle& w) { return contact_begins(w.world()); },
@@ -183,6 +199,10 @@ void bind_events(WorldClass& world) {
           "body_move_events", [](WorldHandle& w) { return body_moves(w.world()); },
           "Bodies the last step moved: body, position (2), angle, fell_asleep, user_data.")
       .def(
+          "body_stopped_events", [](WorldHandle& w) { return body_stops(w.world()); },
+          "Bodies the last step put back where it began, at rest, because the solve diverged "
+          "on them (diverged) or on bodies joined to them: body, diverged, user_data.")
+      .def(
           "events",
           [](WorldHandle& w) {
             const World& world = w.world();
@@ -193,10 +213,11 @@ void bind_events(WorldClass& world) {
             out["sensor_begin"] = sensor_records(world, world.sensor_begin_events());
             out["sensor_end"] = sensor_records(world, world.sensor_end_events());
             out["joint_break"] = joint_breaks(world);
+            out["body_stopped"] = body_stops(world);
             return out;
           },
           "Every event list of the last step but body moves, by name (contact_begin, "
-          "contact_end, hit, sensor_begin, sensor_end, joint_break).");
+          "contact_end, hit, sensor_begin, sensor_end, joint_break, body_stopped).");
 }
 
 }  // namespace mink::python

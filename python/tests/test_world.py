@@ -2,12 +2,16 @@
 events, queries and errors, checked against closed-form results where there are some."""
 
 import math
+import pathlib
 import threading
 
 import numpy
 import pytest
 
 import minkowski as mk
+
+FAR_HINGE = str(pathlib.Path(__file__).resolve().parents[2] / "fuzz" / "corpus" / "scene_reader"
+                / "far_hinge_300m.json")
 
 
 def ground_world(**settings):
@@ -284,7 +288,7 @@ def test_contact_hit_and_sensor_events_as_structured_arrays():
     assert len(sensor_begins) == 1 and len(sensor_ends) == 1
     assert sensor_begins[0]["visitor_body"] == ball.index
     assert set(world.events()) == {"contact_begin", "contact_end", "hit", "sensor_begin",
-                                   "sensor_end", "joint_break"}
+                                   "sensor_end", "joint_break", "body_stopped"}
 
 
 def test_joint_break_events_name_the_joint():
@@ -301,6 +305,24 @@ def test_joint_break_events_name_the_joint():
     assert breaks[0]["body_b"] == weight.index
     assert breaks[0]["force"][1] == pytest.approx(weight.mass * 10, rel=0.05)
     assert world.body_move_events()["body"].tolist() == [weight.index]
+
+
+def test_a_diverged_solve_stops_its_bodies_and_says_so():
+    # Two capsules hinged together twice and to a 32 t circle 300 m away: the single-precision
+    # solve runs away within a few steps; its bodies are put back where the step began, at rest.
+    world = mk.parse_scene(open(FAR_HINGE).read())
+    stopped_steps = 0
+    for _ in range(60):
+        world.step()
+        states = world.states(list(range(3)))
+        assert numpy.isfinite(states).all()
+        stops = world.body_stopped_events()
+        if len(stops):
+            stopped_steps += 1
+            assert sorted(stops["body"].tolist()) == [0, 1, 2]
+            assert stops["diverged"].any()
+            assert (states[:, 3:] == 0).all()
+    assert stopped_steps > 0
 
 
 def test_queries():

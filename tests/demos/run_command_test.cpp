@@ -319,6 +319,40 @@ TEST(RunCommand, EventsReportJointBreaksByJointIndex) {
       << "the chain's joint i holds link i, body i + 1";
 }
 
+// A solve that diverges is said once on stderr, counted in the summary, and each stopped body
+// is a body_stopped line as the world reports it; the run goes on and succeeds.
+TEST(RunCommand, ADivergedSolveIsAWarningAndBodyStoppedLines) {
+  const auto dir = fresh_dir("diverged");
+  const auto events = (dir / "events.jsonl").string();
+  const std::string scene_path = MINK_FUZZ_CORPUS_DIR "/scene_reader/far_hinge_300m.json";
+  const CliResult r =
+      run_cli({"run", scene_path, "--steps", "30", "--no-render", "--events", events});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("the solve diverged"), r.err.rfind("the solve diverged")) << r.err;
+  EXPECT_NE(r.err.find("warning: step"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("diverged: the solve diverged in"), std::string::npos) << r.out;
+  std::vector<nlohmann::json> got;
+  for (const std::string& line : split_lines(read_text(events))) {
+    const auto json = nlohmann::json::parse(line);
+    if (json.at("type") == "body_stopped") got.push_back(json);
+  }
+  World world = build_world(load_scene_file(scene_path));
+  const auto bodies = world.bodies();
+  std::vector<nlohmann::json> want;
+  for (int i = 0; i < 30; ++i) {
+    world.step();
+    for (const BodyStoppedEvent& e : world.body_stopped_events()) {
+      const auto index = std::find(bodies.begin(), bodies.end(), e.body) - bodies.begin();
+      want.push_back({{"step", world.step_count()},
+                      {"type", "body_stopped"},
+                      {"body", index},
+                      {"diverged", e.diverged}});
+    }
+  }
+  EXPECT_FALSE(want.empty());
+  EXPECT_EQ(got, want);
+}
+
 // An end event may name a shape destroyed since: the log still names its body, from the
 // start of the run, and does not reach into the world for it.
 TEST(EventLog, EndEventsOfDestroyedShapesKeepTheirBodies) {

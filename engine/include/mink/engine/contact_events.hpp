@@ -53,6 +53,19 @@ struct BodyMoveEvent {
   std::uint64_t user_data = 0;  ///< the body's user data
 };
 
+/// @brief The solve diverged on a body during the last step, or on a body joined to it by
+/// joints and contacts: it is put back where the step began, at rest, and the impulses of its
+/// joints and contacts start again from zero. A solve diverges on constraints beyond the
+/// solver's single precision (a joint anchor kilometres from a light body, masses and
+/// inertias a billion times apart): a velocity or turn no number holds, a speed a thousand
+/// times the limits (WorldDef::max_linear_speed, an eighth of a turn per substep), or an origin
+/// beyond max_world_coordinate. The world stays finite, and the event says so.
+struct BodyStoppedEvent {
+  BodyId body;                  ///< the body
+  bool diverged = false;        ///< its own solve diverged (else it was joined to one that did)
+  std::uint64_t user_data = 0;  ///< the body's user data
+};
+
 /// @brief A joint's constraint force or torque exceeded its break threshold during the last
 /// step (JointBase::break_force, break_torque); what to do is the caller's choice.
 struct JointBreakEvent {

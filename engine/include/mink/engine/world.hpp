@@ -376,6 +376,9 @@ class World {
   std::span<const JointBreakEvent> joint_break_events() const noexcept;
   /// @brief Bodies that moved (were simulated), in body slot order.
   std::span<const BodyMoveEvent> body_move_events() const noexcept;
+  /// @brief Bodies the step stopped because its solve diverged on them or on bodies joined to
+  /// them (BodyStoppedEvent), in body slot order; empty when every solve held.
+  std::span<const BodyStoppedEvent> body_stopped_events() const noexcept;
   /// @brief Pair, contact, island and solver counts.
   const StepCounters& counters() const noexcept;
   /// @brief Wall time per phase, in milliseconds.
