@@ -76,6 +76,29 @@ inline Rotation turned(const Rotation& r, Real qc, Real qs) {
   return {c * inv_length, s * inv_length};
 }
 
+// Where a kinematic body's own velocity takes it in a step of `dt` in `substeps` substeps: it
+// moves in double precision as the substeps move it, so it arrives where its velocity takes it,
+// to the grid step (world_grid.hpp); (qc, qs) is its turn, as the solver's rotation since the
+// step began.
+struct KinematicMotion {
+  Vec2 moved{0, 0};
+  Real qc = 1, qs = 0;
+};
+inline KinematicMotion kinematic_motion(const Body& b, Real dt, int substeps) {
+  const Real h = dt / substeps;
+  const Real hw = h * b.angular_velocity;
+  KinematicMotion m;
+  for (int i = 0; i < substeps; ++i) {
+    m.moved += h * b.velocity;
+    const Real c = m.qc - hw * m.qs, s = m.qs + hw * m.qc;
+    const Real inv_length = 1 / std::sqrt(c * c + s * s);
+    m.qc = c * inv_length;
+    m.qs = s * inv_length;
+  }
+  m.moved = on_grid(m.moved);
+  return m;
+}
+
 // Moves in a step: awake, enabled and not static.
 inline bool moves(const Body& b) {
   return b.type != BodyType::static_body && b.awake && b.enabled;

@@ -75,21 +75,33 @@ void forget(detail::PulleyJoint& j) {
 // an origin the step would take beyond max_world_coordinate.
 bool WorldState::solve_diverged(std::uint32_t k, Real max_speed, Real max_angular_speed) const {
   const detail::SolverBodyParams& params = solver_params[k];
-  if (!params.dynamic) return false;  // a kinematic body moves by its own velocity
+  const Vec2 start(solver_info[k].cx, solver_info[k].cy);
+  // A centre of mass within a quarter of the limit, and within half of it from the origin,
+  // keeps the origin within the limit whatever the turn; only otherwise is it placed exactly.
+  const auto origin_within = [&](const Vec2& center, Real qc, Real qs) {
+    if (detail::within(center, max_world_coordinate / 4) && !params.far_mass_centre) return true;
+    const detail::Body& b = bodies[solver_to_body[k]];
+    const Rotation rotation = detail::turned(b.rotation, qc, qs);
+    return detail::within_world(center - detail::on_grid(rotation.apply(b.local_center)));
+  };
+  if (!params.dynamic) {
+    // A kinematic body moves by its own velocity, which the solve does not change: only where
+    // it goes can be beyond the world. Its step moves it at most dt times the speed limit.
+    if (detail::within(start, max_world_coordinate / 8) && !params.far_mass_centre &&
+        dt * def.max_linear_speed <= max_world_coordinate / 8) {
+      return false;
+    }
+    const detail::KinematicMotion motion =
+        detail::kinematic_motion(bodies[solver_to_body[k]], dt, substeps);
+    return !origin_within(start + motion.moved, motion.qc, motion.qs);
+  }
   const detail::SolverBody& s = solver_bodies[k];
   const Real vx = s.vx, vy = s.vy, w = s.w;
   for (const Real v : {vx, vy, w, Real(s.dpx), Real(s.dpy), Real(s.qc), Real(s.qs)}) {
     if (!std::isfinite(v)) return true;
   }
   if (vx * vx + vy * vy > max_speed * max_speed || std::abs(w) > max_angular_speed) return true;
-  const Vec2 center =
-      Vec2(solver_info[k].cx, solver_info[k].cy) + detail::on_grid(Vec2(s.dpx, s.dpy));
-  // A centre of mass within a quarter of the limit, and within half of it from the origin,
-  // keeps the origin within the limit whatever the turn; only otherwise is it placed exactly.
-  if (detail::within(center, max_world_coordinate / 4) && !params.far_mass_centre) return false;
-  const detail::Body& b = bodies[solver_to_body[k]];
-  const Rotation rotation = detail::turned(b.rotation, s.qc, s.qs);
-  return !detail::within_world(center - detail::on_grid(rotation.apply(b.local_center)));
+  return !origin_within(start + detail::on_grid(Vec2(s.dpx, s.dpy)), s.qc, s.qs);
 }
 
 void WorldState::stop_diverged() {
@@ -147,9 +159,14 @@ void WorldState::stop_diverged() {
   for (std::uint32_t k = 0; k < count; ++k) {
     if (stopped[k] == 0 && diverged_root[root(parent, k)] != 0) stopped[k] = 2;
     if (stopped[k] == 0) continue;
-    // No motion since the step began: write_back leaves the pose and sets the body at rest.
+    // No motion since the step began: write_back leaves the pose and sets the body at rest (a
+    // kinematic body, moved by its own velocity, is set at rest here).
     solver_bodies[k] = detail::SolverBody{};
     const std::uint32_t i = solver_to_body[k];
+    if (!solver_params[k].dynamic) {
+      bodies[i].velocity = Vec2(0, 0);
+      bodies[i].angular_velocity = 0;
+    }
     stopped_events.push_back({body_id(i), stopped[k] == 1, bodies[i].user_data});
   }
   std::sort(stopped_events.begin() + static_cast<std::ptrdiff_t>(first_event), stopped_events.end(),

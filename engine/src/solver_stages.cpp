@@ -101,8 +101,8 @@ void WorldState::prepare_contacts() {
         p.linear_damping = 1 / (1 + h * b.linear_damping);
         p.angular_damping = 1 / (1 + h * b.angular_damping);
         p.dynamic = true;
-        p.far_mass_centre = b.local_center.norm() > max_world_coordinate / 2;
       }
+      p.far_mass_centre = b.local_center.norm() > max_world_coordinate / 2;
       solver_params[k] = p;
     }
   });
@@ -252,22 +252,12 @@ void WorldState::write_back(std::uint32_t solver_index) {
   b.moved_step = step_count;
   Real qc = sb.qc, qs = sb.qs;
   if (b.type == BodyType::kinematic) {
-    // A kinematic body's motion is prescribed, not solved: it moves in double precision as
-    // the substeps move it (the solver's single-precision copy only served its contacts), so
-    // it arrives where its velocity takes it, to the grid step (world_grid.hpp).
-    const Real h = dt / substeps;
-    const Real hw = h * b.angular_velocity;
-    Vec2 moved(0, 0);
-    qc = 1;
-    qs = 0;
-    for (int i = 0; i < substeps; ++i) {
-      moved += h * b.velocity;
-      const Real c = qc - hw * qs, s = qs + hw * qc;
-      const Real inv_length = 1 / std::sqrt(c * c + s * s);
-      qc = c * inv_length;
-      qs = s * inv_length;
-    }
-    b.center += detail::on_grid(moved);
+    // A kinematic body's motion is prescribed, not solved (the solver's single-precision copy
+    // only served its contacts).
+    const detail::KinematicMotion motion = detail::kinematic_motion(b, dt, substeps);
+    qc = motion.qc;
+    qs = motion.qs;
+    b.center += motion.moved;
   } else {
     b.velocity = Vec2(sb.vx, sb.vy);
     b.angular_velocity = sb.w;

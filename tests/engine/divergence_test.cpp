@@ -142,6 +142,19 @@ TEST(Divergence, AStepDoesNotCarryABodyBeyondTheWorld) {
   world.step();
   EXPECT_TRUE(world.body_stopped_events().empty());
   EXPECT_LT(world.position(body).x(), def.position.x());
+  // A kinematic body, moved by its own velocity, stops at the limit too.
+  BodyDef mover = def;
+  mover.type = BodyType::kinematic;
+  mover.position = Vec2(0, -(max_world_coordinate - 2));
+  mover.linear_velocity = Vec2(0, -300);
+  const BodyId kinematic = world.create_body(mover);
+  world.create_shape(kinematic, ShapeDef::box(0.5, 0.5));
+  world.step();
+  ASSERT_EQ(world.body_stopped_events().size(), 1u);
+  EXPECT_EQ(world.body_stopped_events()[0].body, kinematic);
+  EXPECT_EQ(world.position(kinematic), mover.position);
+  EXPECT_EQ(world.linear_velocity(kinematic), Vec2(0, 0));
+  EXPECT_EQ(World::from_snapshot(world.snapshot()).state_hash(), world.state_hash());
 }
 
 // No ordinary scene's solve is taken for diverged: joint rows may spin a light body well past
