@@ -4,6 +4,7 @@
 // and every joint kind, random materials, kinematic movers, bullets and creation/destruction
 // churn, stepped for a long time while invariants are checked every few steps:
 //   - every body's state is finite;
+//   - no solve diverges (no body is stopped: World::body_stopped_events);
 //   - no body leaves the arena (a closed chain box) by more than a margin; one that does is
 //     counted as escaped and removed (the kill floor), so the run goes on;
 //   - in quiet phases (no movers, no motors, no churn) mechanical energy (kinetic plus
@@ -45,6 +46,7 @@ struct SoakResult {
   std::size_t bullets_fired = 0;
   std::size_t escaped = 0;     // left the arena: removed and counted
   std::size_t non_finite = 0;  // checks that found a NaN or infinity
+  std::size_t stopped = 0;     // bodies a diverged solve stopped (World::body_stopped_events)
   int quiet_phases = 0;
   double worst_energy_gain = 0;       // J, largest rise of energy in a quiet phase
   double energy_tolerance = 0;        // J, the largest tolerance a quiet phase allowed
@@ -80,6 +82,7 @@ class Soak {
       if (quiet && in_phase == 1) begin_quiet();
       if (!quiet) drive(step);
       world_.step();
+      result_.stopped += world_.body_stopped_events().size();
       ++result_.steps;
       if (step % options_.check_every == 0) check(quiet && in_phase > kQuietSettle, in_phase);
       if (step == warm_up) result_.warm_rss_kb = resident_kb();
@@ -440,16 +443,17 @@ inline SoakResult run_soak(const SoakOptions& options) {
 }
 
 inline void print_soak(const SoakOptions& options, const SoakResult& r, std::FILE* out) {
-  std::fprintf(out,
-               "seed %llu, %d workers: %d steps, %zu bodies made, %zu destroyed, %zu joints, "
-               "%zu bullets; escaped %zu, non-finite %zu; %d quiet phases, worst energy gain "
-               "%.3g J (tolerance up to %.3g J, %zu over), peak kinetic energy %.4g J; RSS %ld kB "
-               "after warm-up, %ld kB peak, %ld kB at the end; state hash %016llx\n",
-               static_cast<unsigned long long>(options.seed), options.workers, r.steps,
-               r.bodies_created, r.bodies_destroyed, r.joints_created, r.bullets_fired, r.escaped,
-               r.non_finite, r.quiet_phases, r.worst_energy_gain, r.energy_tolerance,
-               r.energy_violations, r.peak_kinetic_energy, r.warm_rss_kb, r.peak_rss_kb,
-               r.final_rss_kb, static_cast<unsigned long long>(r.final_hash));
+  std::fprintf(
+      out,
+      "seed %llu, %d workers: %d steps, %zu bodies made, %zu destroyed, %zu joints, "
+      "%zu bullets; escaped %zu, non-finite %zu, stopped %zu; %d quiet phases, worst energy gain "
+      "%.3g J (tolerance up to %.3g J, %zu over), peak kinetic energy %.4g J; RSS %ld kB "
+      "after warm-up, %ld kB peak, %ld kB at the end; state hash %016llx\n",
+      static_cast<unsigned long long>(options.seed), options.workers, r.steps, r.bodies_created,
+      r.bodies_destroyed, r.joints_created, r.bullets_fired, r.escaped, r.non_finite, r.stopped,
+      r.quiet_phases, r.worst_energy_gain, r.energy_tolerance, r.energy_violations,
+      r.peak_kinetic_energy, r.warm_rss_kb, r.peak_rss_kb, r.final_rss_kb,
+      static_cast<unsigned long long>(r.final_hash));
 }
 
 }  // namespace mink::soak

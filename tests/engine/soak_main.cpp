@@ -32,8 +32,8 @@ int main(int argc, char** argv) {
       total_steps += r.steps;
       worst_gain = std::max(worst_gain, r.worst_energy_gain);
       worst_growth = std::max(worst_growth, r.peak_rss_kb - r.warm_rss_kb);
-      const bool failed = r.non_finite != 0 || r.escaped != 0 || r.energy_violations != 0 ||
-                          r.peak_rss_kb > r.warm_rss_kb + 4096;
+      const bool failed = r.non_finite != 0 || r.escaped != 0 || r.stopped != 0 ||
+                          r.energy_violations != 0 || r.peak_rss_kb > r.warm_rss_kb + 4096;
       if (failed) {
         std::printf("  FAILED\n");
         ++failures;

@@ -19,6 +19,8 @@ void expect_soak_holds(std::uint64_t seed, int steps) {
     soak::print_soak(options, r, stdout);
     EXPECT_EQ(r.steps, steps);
     EXPECT_EQ(r.non_finite, 0u) << "seed " << seed << ", " << workers << " workers";
+    // Nothing in it is beyond the solver: the divergence stop never acts.
+    EXPECT_EQ(r.stopped, 0u) << "seed " << seed << ", " << workers << " workers";
     EXPECT_EQ(r.escaped, 0u) << "seed " << seed << ", " << workers << " workers";
     EXPECT_GE(r.quiet_phases, 1);
     EXPECT_EQ(r.energy_violations, 0u)
