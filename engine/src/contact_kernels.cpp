@@ -16,7 +16,9 @@ Softness make_softness(Real hertz, Real damping_ratio, Real h) {
   const Real a1 = 2 * damping_ratio + h * omega;
   const Real a2 = h * omega * a1;
   const Real a3 = 1 / (1 + a2);
-  return {omega / a1, a2 * a3, a3};
+  // Undamped at a frequency so low that h * omega underflows to 0 (a spring of 5e-324 hertz),
+  // the rate is its limit, omega / (h omega) = 1 / h, not omega / 0.
+  return {a1 > 0 ? omega / a1 : 1 / h, a2 * a3, a3};
 }
 
 namespace {

@@ -61,13 +61,24 @@ class DefCheck {
                 " m of its body's origin, got (" + detail::exact_number(v.x()) + ", " +
                 detail::exact_number(v.y()) + ")");
   }
+  // A frequency or damping ratio. Beyond max_setting_magnitude a spring's softness overflows
+  // (a weld spring of 1e300 hertz held NaN in its joint's state) and is rigid long before.
+  void rate(Real v, const char* field) const {
+    require(std::isfinite(v) && v >= 0 && v <= max_setting_magnitude,
+            what_ + "." + field + " must be non-negative and within max_setting_magnitude (" +
+                detail::exact_number(max_setting_magnitude) + "), got " + detail::exact_number(v));
+  }
   void motor(const JointMotor& m) const {
-    finite_value(m.speed, "motor.speed");
+    // As a body's velocity: a motor drives one at this speed.
+    require(std::isfinite(m.speed) && std::abs(m.speed) <= max_setting_magnitude,
+            what_ + ".motor.speed must be finite and within max_setting_magnitude (" +
+                detail::exact_number(max_setting_magnitude) + "), got " +
+                detail::exact_number(m.speed));
     non_negative(m.max_force, "motor.max_force");
   }
   void spring(const JointSpring& s) const {
-    non_negative(s.hertz, "spring.hertz");
-    non_negative(s.damping_ratio, "spring.damping_ratio");
+    rate(s.hertz, "spring.hertz");
+    rate(s.damping_ratio, "spring.damping_ratio");
     finite_value(s.target, "spring.target");
   }
   void limit(const JointLimit& l) const {
@@ -114,10 +125,10 @@ void check_def(const DefCheck& c, const DistanceJointDef& d) {
 void check_def(const DefCheck& c, const WeldJointDef& d) {
   c.anchors(d);
   c.finite_value(d.reference_angle, "reference_angle");
-  c.non_negative(d.linear_hertz, "linear_hertz");
-  c.non_negative(d.linear_damping_ratio, "linear_damping_ratio");
-  c.non_negative(d.angular_hertz, "angular_hertz");
-  c.non_negative(d.angular_damping_ratio, "angular_damping_ratio");
+  c.rate(d.linear_hertz, "linear_hertz");
+  c.rate(d.linear_damping_ratio, "linear_damping_ratio");
+  c.rate(d.angular_hertz, "angular_hertz");
+  c.rate(d.angular_damping_ratio, "angular_damping_ratio");
 }
 void check_def(const DefCheck& c, const WheelJointDef& d) {
   c.anchors(d);

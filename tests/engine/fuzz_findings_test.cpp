@@ -202,6 +202,80 @@ TEST(FuzzFindings, AJointAnchorBeyondItsReachIsRefused) {
   EXPECT_NE(scene_error.find("local_anchor_b"), std::string::npos) << scene_error;
 }
 
+// The World API harness, with its extreme values, found a weld spring of 1e300 hertz: its
+// softness overflowed to NaN in the joint's state, and the world's own snapshot was refused.
+// Spring frequencies and damping ratios (weld springs and the driven kinds' springs) and motor
+// speeds now stay within max_setting_magnitude, refused otherwise, on creation, through the
+// setters and in scene files.
+TEST(FuzzFindings, JointRatesAndMotorSpeedsBeyondTheSettingLimitAreRefused) {
+  World world;
+  const BodyId ground = world.create_body({});
+  const BodyId box = test::add_box(world, {0, 2});
+  WeldJointDef weld;
+  weld.body_a = ground;
+  weld.body_b = box;
+  weld.local_anchor_a = Vec2(0, 2);
+  weld.linear_hertz = 1e300;
+  std::string error = test::error_of<InvalidArgumentError>([&] { world.create_joint(weld); });
+  EXPECT_NE(error.find("linear_hertz"), std::string::npos) << error;
+  EXPECT_NE(error.find("max_setting_magnitude"), std::string::npos) << error;
+  weld.linear_hertz = max_setting_magnitude;
+  weld.angular_damping_ratio = max_setting_magnitude;
+  const JointId welded = world.create_joint(weld);
+  error =
+      test::error_of<InvalidArgumentError>([&] { world.set_weld_springs(welded, 1, 1, 2e9, 1); });
+  EXPECT_NE(error.find("angular_hertz"), std::string::npos) << error;
+  EXPECT_EQ(std::get<WeldJointDef>(world.joint_def(welded)).angular_hertz, 0);
+  // At the limit, the world steps finite and its snapshot restores; so it does with an
+  // undamped spring of the smallest frequency, whose softness took omega / 0 (h omega
+  // underflowed) and held an infinite rate in the joint's state.
+  const BodyId soft = test::add_box(world, {-3, 2});
+  WeldJointDef slow = weld;
+  slow.body_b = soft;
+  slow.local_anchor_a = Vec2(-3, 2);
+  slow.linear_hertz = std::numeric_limits<Real>::denorm_min();
+  slow.angular_damping_ratio = 0;
+  world.create_joint(slow);
+  for (int i = 0; i < 60; ++i) world.step();
+  EXPECT_TRUE(all_finite(world));
+  EXPECT_EQ(World::from_snapshot(world.snapshot()).state_hash(), world.state_hash());
+
+  RevoluteJointDef hinge;
+  hinge.body_a = ground;
+  hinge.body_b = test::add_box(world, {3, 2});
+  hinge.local_anchor_a = Vec2(3, 2);
+  hinge.spring = {true, 1e10, 0.5, 0};
+  error = test::error_of<InvalidArgumentError>([&] { world.create_joint(hinge); });
+  EXPECT_NE(error.find("spring.hertz"), std::string::npos) << error;
+  hinge.spring = {true, 5, 1e300, 0};
+  error = test::error_of<InvalidArgumentError>([&] { world.create_joint(hinge); });
+  EXPECT_NE(error.find("spring.damping_ratio"), std::string::npos) << error;
+  hinge.spring = {};
+  hinge.motor = {true, -2e9, 10};
+  error = test::error_of<InvalidArgumentError>([&] { world.create_joint(hinge); });
+  EXPECT_NE(error.find("motor.speed"), std::string::npos) << error;
+  hinge.motor = {true, -max_setting_magnitude, 10};
+  const JointId hinged = world.create_joint(hinge);
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.set_joint_spring(hinged, {true, 1e300, 1, 0});
+            }),
+            "no error");
+  EXPECT_NE(test::error_of<InvalidArgumentError>([&] {
+              world.set_joint_motor(hinged, {true, 1e300, 1});
+            }),
+            "no error");
+
+  const std::string scene = R"({"format": "minkowski-scene", "version": 1, "bodies": [
+      {"type": "static", "position": [0, 0], "shapes": []},
+      {"type": "dynamic", "position": [0, 2], "shapes": [{"circle": {"radius": 0.25}}]}],
+      "joints": [{"type": "weld", "body_a": 0, "body_b": 1, "anchor": [0, 2],
+      "linear_hertz": 1e300}]})";
+  const std::string scene_error =
+      test::error_of<SceneFileError>([&] { (void)parse_scene_json(scene); });
+  EXPECT_NE(scene_error.find("joints[0]"), std::string::npos) << scene_error;
+  EXPECT_NE(scene_error.find("linear_hertz"), std::string::npos) << scene_error;
+}
+
 // The snapshot-restore fuzzer found a world whose gravity was 1e175 m/s^2: finite, so taken,
 // but the single-precision solver turned it infinite and the world NaN in one step. Gravity,
 // the other world settings and a body's gravity scale now stay within max_setting_magnitude

@@ -36,7 +36,7 @@ std::string_view to_string(JointType type) noexcept;
 /// for translations and lengths) with at most `max_force` (N m for angular motors, N for linear).
 struct JointMotor {
   bool enabled = false;  ///< off: the coordinate runs free
-  Real speed = 0;        ///< target speed of the coordinate
+  Real speed = 0;        ///< target speed of the coordinate; within max_setting_magnitude
   Real max_force = 0;    ///< N m for revolute and wheel, N for prismatic and distance; >= 0
 };
 
@@ -45,8 +45,8 @@ struct JointMotor {
 /// given as a frequency so that it does not depend on the masses involved.
 struct JointSpring {
   bool enabled = false;    ///< off: no spring
-  Real hertz = 0;          ///< natural frequency, >= 0 (0: holds the coordinate's speed)
-  Real damping_ratio = 0;  ///< 1 is critical; >= 0
+  Real hertz = 0;          ///< natural frequency, 0..max_setting_magnitude (0: holds the speed)
+  Real damping_ratio = 0;  ///< 1 is critical; 0..max_setting_magnitude
   Real target = 0;         ///< rest value of the coordinate (distance: unused, see length)
 };
 
@@ -109,7 +109,8 @@ struct WeldJointDef : JointBase {
   Vec2 local_anchor_a{0, 0};
   Vec2 local_anchor_b{0, 0};
   Real reference_angle = 0;
-  Real linear_hertz = 0, linear_damping_ratio = 0;    ///< 0 hertz: rigid
+  /// 0 hertz: rigid. Each 0..max_setting_magnitude.
+  Real linear_hertz = 0, linear_damping_ratio = 0;
   Real angular_hertz = 0, angular_damping_ratio = 0;  ///< 0 hertz: rigid
 };
 
