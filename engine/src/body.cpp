@@ -22,9 +22,7 @@ using detail::within_world;
 
 using detail::Body;
 
-namespace {
-
-void check_body_def(const BodyDef& def) {
+void detail::check_body_def(const BodyDef& def) {
   require(within_world(def.position),
           "BodyDef.position must be finite and within max_world_coordinate (1e15 m) on each axis");
   require(std::isfinite(def.angle), "BodyDef.angle must be finite");
@@ -42,8 +40,6 @@ void check_body_def(const BodyDef& def) {
   require(!std::isnan(def.continuous_threshold) && def.continuous_threshold >= 0,
           "BodyDef.continuous_threshold must be non-negative");
 }
-
-}  // namespace
 
 void WorldState::wake(Body& b) {
   if (b.type == BodyType::static_body) return;
@@ -136,7 +132,7 @@ void WorldState::update_mass(Body& b) {
 
 BodyId World::create_body(const BodyDef& def) {
   const detail::RecordScope record(*this, detail::Call::create_body, def);
-  check_body_def(def);
+  detail::check_body_def(def);
   WorldState& w = *state_;
   const std::uint32_t index = w.bodies.allocate();
   Body& b = w.bodies[index];

@@ -99,6 +99,9 @@ inline KinematicMotion kinematic_motion(const Body& b, Real dt, int substeps) {
   return m;
 }
 
+// What create_body refuses (body.cpp); the scene reader refuses the same.
+void check_body_def(const BodyDef& def);
+
 // Moves in a step: awake, enabled and not static.
 inline bool moves(const Body& b) {
   return b.type != BodyType::static_body && b.awake && b.enabled;

@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 
+#include "body.hpp"
 #include "mink/engine/scene_fields.hpp"
 #include "mink/engine/world.hpp"
 #include "shape.hpp"
@@ -389,6 +390,13 @@ SceneBody read_body(const Json& value, const std::string& path) {
   ObjectReader reader(value, path);
   SceneBody body;
   read_fields(reader, body_fields(), body.body);
+  // What the fields' ranges do not say, as create_body would refuse it (a velocity beyond
+  // max_setting_magnitude was read, then refused when the scene was built).
+  try {
+    detail::check_body_def(body.body);
+  } catch (const Error& error) {
+    throw SceneFileError(path, error.what());
+  }
   const std::string shapes_path = reader.child("shapes");
   const Json& shapes = require_array(reader.require("shapes"), shapes_path);
   for (std::size_t i = 0; i < shapes.size(); ++i) {

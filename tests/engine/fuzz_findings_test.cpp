@@ -276,6 +276,20 @@ TEST(FuzzFindings, JointRatesAndMotorSpeedsBeyondTheSettingLimitAreRefused) {
   EXPECT_NE(scene_error.find("linear_hertz"), std::string::npos) << scene_error;
 }
 
+// The scene reader fuzzer found a scene without joints whose body moved at 7.8e74 m/s: read,
+// then refused by create_body when built (the reader checked bodies in the engine only with
+// joints). The reader now refuses what create_body refuses, naming the body.
+TEST(FuzzFindings, TheSceneReaderRefusesTheBodiesCreateBodyRefuses) {
+  const std::string scene = R"({"format": "minkowski-scene", "version": 1, "bodies": [
+      {"type": "dynamic", "position": [0, 2], "shapes": [{"circle": {"radius": 0.25}}]},
+      {"type": "dynamic", "position": [0, 5], "linear_velocity": [0, 7.8e74],
+       "shapes": [{"circle": {"radius": 0.25}}]}]})";
+  const std::string error = test::error_of<SceneFileError>([&] { (void)parse_scene_json(scene); });
+  EXPECT_NE(error.find("bodies[1]"), std::string::npos) << error;
+  EXPECT_NE(error.find("linear_velocity"), std::string::npos) << error;
+  EXPECT_NE(error.find("max_setting_magnitude"), std::string::npos) << error;
+}
+
 // The snapshot-restore fuzzer found a world whose gravity was 1e175 m/s^2: finite, so taken,
 // but the single-precision solver turned it infinite and the world NaN in one step. Gravity,
 // the other world settings and a body's gravity scale now stay within max_setting_magnitude
