@@ -98,9 +98,7 @@ void EventLog::joint_break(const World& world, const JointBreakEvent& event) {
   }
   for (const auto& [name, body] : {std::pair{"body_a", world.joint_body_a(event.joint)},
                                    std::pair{"body_b", world.joint_body_b(event.joint)}}) {
-    if (const auto index = body_indices_.find(key(body)); index != body_indices_.end()) {
-      line.json[name] = index->second;
-    }
+    if (const auto index = body_index(body)) line.json[name] = *index;
   }
   line.json["force"] = xy(event.force);
   line.json["torque"] = event.torque;
@@ -112,9 +110,7 @@ void EventLog::body_stopped(const BodyStoppedEvent& event) {
   Line line;
   line.json["step"] = step_;
   line.json["type"] = "body_stopped";
-  if (const auto index = body_indices_.find(key(event.body)); index != body_indices_.end()) {
-    line.json["body"] = index->second;
-  }
+  if (const auto index = body_index(event.body)) line.json["body"] = *index;
   line.json["diverged"] = event.diverged;
   write_line(line);
 }
@@ -142,9 +138,13 @@ std::optional<std::size_t> EventLog::body_index(const World& world, ShapeId shap
   }
   // A shape made during the run, on a body of the scene.
   if (!world.is_valid(shape)) return std::nullopt;
-  const auto body = body_indices_.find(key(world.shape_body(shape)));
-  if (body == body_indices_.end()) return std::nullopt;
-  return body->second;
+  return body_index(world.shape_body(shape));
+}
+
+std::optional<std::size_t> EventLog::body_index(BodyId body) const {
+  const auto known = body_indices_.find(key(body));
+  if (known == body_indices_.end()) return std::nullopt;
+  return known->second;
 }
 
 }  // namespace mink::cli

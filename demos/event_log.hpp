@@ -59,6 +59,8 @@ class EventLog {
   // The scene index of the shape's body; none for a shape neither live nor known at the
   // start (a stale id in an end event after its shape was destroyed).
   std::optional<std::size_t> body_index(const World& world, ShapeId shape) const;
+  // The scene index of a body; none for one the scene did not have (made during the run).
+  std::optional<std::size_t> body_index(BodyId body) const;
 
   std::filesystem::path path_;
   OutputFile out_;

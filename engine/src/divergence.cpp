@@ -13,6 +13,7 @@
 
 #include "checks.hpp"
 #include "joint_common.hpp"
+#include "union_find.hpp"
 #include "world_state.hpp"
 
 namespace mink {
@@ -23,21 +24,6 @@ namespace {
 // substep within them, and the fastest a joint row spins a body in the benchmark suite and
 // the examples is 13 times the turn limit (a lander's light leg against its hull).
 constexpr Real kRunawayFactor = 1000;
-
-// Union-find over solver bodies, joined where a joint or contact pulls both.
-std::uint32_t root(std::vector<std::uint32_t>& parent, std::uint32_t i) {
-  while (parent[i] != i) {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
-
-void join(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b) {
-  a = root(parent, a);
-  b = root(parent, b);
-  if (a != b) parent[std::max(a, b)] = std::min(a, b);
-}
 
 // What a stopped joint forgets: the impulses it warm starts from.
 void forget(detail::RevoluteJoint& j) {
@@ -135,29 +121,30 @@ void WorldState::stop_diverged() {
   };
   for (const detail::ConstraintBodies& c : constraint_bodies) {
     if (pulled(c.a) && pulled(c.b)) {
-      join(parent, static_cast<std::uint32_t>(c.a), static_cast<std::uint32_t>(c.b));
+      detail::join_sets(parent, static_cast<std::uint32_t>(c.a), static_cast<std::uint32_t>(c.b));
     }
   }
+  // The joints' bodies from their compact copies, not from the kilobyte records.
   for (const std::uint32_t j : step_joints) {
-    const detail::Joint& joint = joints[j];
+    const detail::JointBodies& joint = joint_bodies[j];
     std::int32_t first = -1;
-    for (int k = 0; k < joint.body_count; ++k) {
+    for (std::uint32_t k = 0; k < joint.count; ++k) {
       const std::int32_t s = body_solver_index[joint.body[k]];
       if (!pulled(s)) continue;
       if (first < 0) {
         first = s;
       } else {
-        join(parent, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(s));
+        detail::join_sets(parent, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(s));
       }
     }
   }
   std::vector<std::uint8_t> diverged_root(count, 0);
   for (std::uint32_t k = 0; k < count; ++k) {
-    if (stopped[k] == 1) diverged_root[root(parent, k)] = 1;
+    if (stopped[k] == 1) diverged_root[detail::find_set(parent, k)] = 1;
   }
   const std::size_t first_event = stopped_events.size();
   for (std::uint32_t k = 0; k < count; ++k) {
-    if (stopped[k] == 0 && diverged_root[root(parent, k)] != 0) stopped[k] = 2;
+    if (stopped[k] == 0 && diverged_root[detail::find_set(parent, k)] != 0) stopped[k] = 2;
     if (stopped[k] == 0) continue;
     // No motion since the step began: write_back leaves the pose and sets the body at rest (a
     // kinematic body, moved by its own velocity, is set at rest here).

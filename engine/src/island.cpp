@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "union_find.hpp"
 #include "world_state.hpp"
 
 namespace mink {
@@ -26,14 +27,9 @@ void WorldState::update_islands() {
   island_parent.resize(bodies.size());
   island_sleep.resize(bodies.size());
   island_members.clear();
-  const auto find = [&](std::uint32_t i) {
-    while (island_parent[i] != i) i = island_parent[i] = island_parent[island_parent[i]];
-    return i;
-  };
+  const auto find = [&](std::uint32_t i) { return detail::find_set(island_parent, i); };
   const auto join = [&](std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) island_parent[std::max(a, b)] = std::min(a, b);
+    detail::join_sets(island_parent, a, b);
   };
   const auto links = [&](const Body& b) { return b.type == BodyType::dynamic && b.enabled; };
   const auto enter = [&](std::uint32_t i) {

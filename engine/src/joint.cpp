@@ -64,13 +64,13 @@ class DefCheck {
   // A frequency or damping ratio. Beyond max_setting_magnitude a spring's softness overflows
   // (a weld spring of 1e300 hertz held NaN in its joint's state) and is rigid long before.
   void rate(Real v, const char* field) const {
-    require(std::isfinite(v) && v >= 0 && v <= max_setting_magnitude,
+    require(detail::within_settings(v) && v >= 0,
             what_ + "." + field + " must be non-negative and within max_setting_magnitude (" +
                 detail::exact_number(max_setting_magnitude) + "), got " + detail::exact_number(v));
   }
   void motor(const JointMotor& m) const {
     // As a body's velocity: a motor drives one at this speed.
-    require(std::isfinite(m.speed) && std::abs(m.speed) <= max_setting_magnitude,
+    require(detail::within_settings(m.speed),
             what_ + ".motor.speed must be finite and within max_setting_magnitude (" +
                 detail::exact_number(max_setting_magnitude) + "), got " +
                 detail::exact_number(m.speed));

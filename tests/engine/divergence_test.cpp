@@ -96,16 +96,12 @@ TEST(Divergence, StopsAreBitwiseTheSameAtOneAndTwoWorkers) {
 TEST(Divergence, OnlyBodiesJoinedToADivergedOneStop) {
   World world = build_world(parse_scene_json(kFarHinge));
   World alone(world.def());
-  BodyDef def;
-  def.type = BodyType::dynamic;
-  def.position = Vec2(100, 0);
   BodyDef ground_def;
   ground_def.position = Vec2(100, -2);
   BodyId box, lone_box;
   for (auto [w, b] : {std::pair{&world, &box}, std::pair{&alone, &lone_box}}) {
     w->create_shape(w->create_body(ground_def), ShapeDef::box(5, 0.5));
-    *b = w->create_body(def);
-    w->create_shape(*b, ShapeDef::box(0.5, 0.5));
+    *b = test::add_box(*w, {100, 0});
   }
   int stopped_steps = 0;
   for (int step = 0; step < 60; ++step) {
@@ -122,28 +118,23 @@ TEST(Divergence, OnlyBodiesJoinedToADivergedOneStop) {
 // A step that would carry a body's origin past max_world_coordinate stops it there: before, the
 // body went past the limit, and the world's own snapshot was refused.
 TEST(Divergence, AStepDoesNotCarryABodyBeyondTheWorld) {
-  WorldDef settings;
-  settings.gravity = Vec2(0, 0);
-  World world(settings);
-  BodyDef def;
-  def.type = BodyType::dynamic;
-  def.position = Vec2(max_world_coordinate - 2, 0);
-  def.linear_velocity = Vec2(300, 0);  // 5 m per step
-  const BodyId body = world.create_body(def);
-  world.create_shape(body, ShapeDef::circle(0.5));
+  World world(test::free_world(/*gravity=*/false));
+  const Vec2 start(max_world_coordinate - 2, 0);
+  const BodyId body = test::add_ball(world, start, 0.5);
+  world.set_linear_velocity(body, Vec2(300, 0));  // 5 m per step
   world.step();
   ASSERT_EQ(world.body_stopped_events().size(), 1u);
   EXPECT_TRUE(world.body_stopped_events()[0].diverged);
-  EXPECT_EQ(world.position(body), def.position);
+  EXPECT_EQ(world.position(body), start);
   EXPECT_EQ(world.linear_velocity(body), Vec2(0, 0));
   EXPECT_EQ(World::from_snapshot(world.snapshot()).state_hash(), world.state_hash());
   // Away from the limit it moves on.
   world.set_linear_velocity(body, Vec2(-300, 0));
   world.step();
   EXPECT_TRUE(world.body_stopped_events().empty());
-  EXPECT_LT(world.position(body).x(), def.position.x());
+  EXPECT_LT(world.position(body).x(), start.x());
   // A kinematic body, moved by its own velocity, stops at the limit too.
-  BodyDef mover = def;
+  BodyDef mover;
   mover.type = BodyType::kinematic;
   mover.position = Vec2(0, -(max_world_coordinate - 2));
   mover.linear_velocity = Vec2(0, -300);
