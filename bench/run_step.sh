@@ -9,9 +9,11 @@
 #    name three times: at Box2D v3's settings (mink_matched: 4 substeps, 30 Hz contacts of
 #    damping ratio 10, 3 m/s push-out, joints at 60 Hz and damping ratio 2), the same with
 #    continuous collision off (mink_matched_no_ccd, for what continuous collision costs) and at
-#    our own solver defaults (mink_defaults). Sleeping is as in Box2D v3's app in every run: off where the
-#    scene turns it off (joint_grid, large_pyramid, many_pyramids), on elsewhere. A scene we
-#    have no built-in for is skipped on our side, with a message.
+#    our own solver defaults (mink_defaults); and Box2D v3 again with its continuous collision
+#    off (box2d_v3_no_ccd), for what it costs Box2D v3 itself. Sleeping is as in Box2D v3's
+#    app in every run: off where the scene turns it off (joint_grid, large_pyramid,
+#    many_pyramids), on elsewhere. A scene we have no built-in for is skipped on our side, with
+#    a message.
 #    Every run is a process of its own (bench/engine/step_race.hpp). The runs of a scene
 #    and worker count are interleaved: they take turns of 200 ms, one running while the others
 #    are stopped (bench/engine/take_turns.cpp), so a busy moment of a shared machine falls on
@@ -20,7 +22,8 @@
 #    It writes
 #      step_v3.csv          case,size,implementation,median_ns: the median wall time of a step
 #                           over the timed steps of all rounds (size: workers; implementation:
-#                           box2d_v3, mink_matched, mink_matched_no_ccd or mink_defaults)
+#                           box2d_v3, box2d_v3_no_ccd, mink_matched, mink_matched_no_ccd or
+#                           mink_defaults)
 #      step_v3_cpu.csv      the same for the CPU time of a step (every thread of the process).
 #                           On a busy machine every process waits for a core now and then; a
 #                           short step mostly falls between two waits and a long one mostly
@@ -29,9 +32,11 @@
 #                           figure on a busy machine; at 2 it is the work of both workers,
 #                           spinning included, not the time a step takes
 #      step_v3_ratios.csv   ours / Box2D v3 per scene, one column per setting and worker count
-#      step_v3_continuous.csv  case,workers,on_ns,off_ns,cost: mink_matched against
-#                           mink_matched_no_ccd, the median steps and on / off - 1 (the share
-#                           continuous collision adds), per scene and worker count
+#      step_v3_continuous.csv  case,workers,on_ns,off_ns,cost,v3_on_ns,v3_off_ns,v3_cost:
+#                           mink_matched against mink_matched_no_ccd, the median steps and
+#                           on / off - 1 (the share continuous collision adds), per scene and
+#                           worker count; and the same for Box2D v3 (box2d_v3 against
+#                           box2d_v3_no_ccd, its continuous collision off, when that ran)
 #      step_v3.png          those ratios as bars (gnuplot, bench/plot_step_v3.gp)
 #      step_v3_memory.csv   case,implementation,peak_kib: the peak resident memory of the
 #                           scene's process at the first worker count, the most of its rounds
@@ -53,7 +58,8 @@
 #   MINK_BENCH_STEP_V3_SCENES="a b"   part 2: only these scenes (default: all ten)
 #   MINK_BENCH_STEP_V3_WORKERS="1 2"  part 2: worker counts (default 1 and 2)
 #   MINK_BENCH_STEP_V3_IMPLEMENTATIONS="box2d_v3 mink_matched"   part 2: only these (default:
-#                                     box2d_v3 mink_matched mink_matched_no_ccd mink_defaults)
+#                                     box2d_v3 mink_matched mink_matched_no_ccd mink_defaults
+#                                     box2d_v3_no_ccd)
 #   MINK_BENCH_STEP_V3_TURN_MS=T      part 2: length of a turn in ms (default 200)
 #   MINK_BENCH_STEP_V3_SLEEP=off      part 2: sleeping off in every scene of both engines
 #                                     (default app: as Box2D v3's app has it)
@@ -93,7 +99,7 @@ turn_ms=${MINK_BENCH_STEP_V3_TURN_MS:-200}
 workers_list=${MINK_BENCH_STEP_V3_WORKERS:-1 2}
 sleep_mode=${MINK_BENCH_STEP_V3_SLEEP:-app}
 steps_override=${MINK_BENCH_STEP_V3_STEPS:-}
-known_implementations="box2d_v3 mink_matched mink_matched_no_ccd mink_defaults"
+known_implementations="box2d_v3 mink_matched mink_matched_no_ccd mink_defaults box2d_v3_no_ccd"
 implementations=${MINK_BENCH_STEP_V3_IMPLEMENTATIONS:-$known_implementations}
 all_scenes=$("$v3_runner" --list | awk '{ printf "%s ", $1 }')
 scenes=${MINK_BENCH_STEP_V3_SCENES:-$all_scenes}
@@ -105,7 +111,7 @@ for scene in $scenes; do
 done
 for implementation in $implementations; do
   case $implementation in
-    box2d_v3 | mink_matched | mink_matched_no_ccd | mink_defaults) ;;
+    box2d_v3 | mink_matched | mink_matched_no_ccd | mink_defaults | box2d_v3_no_ccd) ;;
     *)
       echo "run_step.sh: MINK_BENCH_STEP_V3_IMPLEMENTATIONS: $implementation is not one of" \
         "$known_implementations" >&2
@@ -155,7 +161,7 @@ for round in $(seq "$rounds"); do
       commands=()
       for implementation in $implementations; do
         runner=$mink_runner
-        if [ "$implementation" = box2d_v3 ]; then runner=$v3_runner; fi
+        case $implementation in box2d_v3*) runner=$v3_runner ;; esac
         if [ ${#commands[@]} -gt 0 ]; then commands+=(--and); fi
         steps=$(steps_for "$scene")
         commands+=("$runner" "$scene" --workers="$workers" --implementation="$implementation"
@@ -279,14 +285,20 @@ continuous_csv=$results_dir/step_v3_continuous.csv
 awk -F, -v workers_list="$workers_list" -v scenes="$scenes" '
   FNR > 1 { t[$1 "," $2 "," $3] = $4 }
   END {
-    print "case,workers,on_ns,off_ns,cost"
+    print "case,workers,on_ns,off_ns,cost,v3_on_ns,v3_off_ns,v3_cost"
     nw = split(workers_list, w, " ")
     ns = split(scenes, s, " ")
     for (i = 1; i <= ns; ++i) {
       for (j = 1; j <= nw; ++j) {
         on = t[s[i] "," w[j] ",mink_matched"]
         off = t[s[i] "," w[j] ",mink_matched_no_ccd"]
-        if (on != "" && off != "") printf "%s,%s,%s,%s,%.4f\n", s[i], w[j], on, off, on / off - 1
+        v3_on = t[s[i] "," w[j] ",box2d_v3"]
+        v3_off = t[s[i] "," w[j] ",box2d_v3_no_ccd"]
+        v3_cost = v3_on != "" && v3_off != "" ? sprintf("%.4f", v3_on / v3_off - 1) : ""
+        if (on != "" && off != "") {
+          printf "%s,%s,%s,%s,%.4f,%s,%s,%s\n", s[i], w[j], on, off, on / off - 1, v3_on, v3_off,
+                 v3_cost
+        }
       }
     }
   }' "$v3_csv" >"$continuous_csv"

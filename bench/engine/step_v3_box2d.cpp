@@ -1,8 +1,9 @@
 // Box2D v3's side of the race (bench/run_step.sh): one scene of its benchmark suite, built by
 // its own shared/benchmarks.c and stepped as its benchmark app steps it: b2DefaultWorldDef with
-// continuous collision on and workerCount workers (Box2D v3's built-in scheduler runs
-// workerCount - 1 threads beside the caller), the scene's step function (rain's ragdolls,
-// junkyard's pusher, spinner's angle) before each b2World_Step of 1/60 s in 4 substeps.
+// continuous collision on (off for box2d_v3_no_ccd) and workerCount workers (Box2D v3's
+// built-in scheduler runs workerCount - 1 threads beside the caller), the scene's step
+// function (rain's ragdolls, junkyard's pusher, spinner's angle) before each b2World_Step of
+// 1/60 s in 4 substeps.
 // See step_race.hpp for the command line.
 
 #include <stdexcept>
@@ -43,7 +44,8 @@ class Box2dV3World final : public RaceWorld {
   Box2dV3World(const Box2dV3Scene& scene, const RaceRequest& request) : scene_(scene) {
     const SuiteScene& suite = *request.scene;
     b2WorldDef def = b2DefaultWorldDef();
-    def.enableContinuous = true;
+    // box2d_v3_no_ccd: what continuous collision costs Box2D v3 itself, beside ours.
+    def.enableContinuous = request.implementation != "box2d_v3_no_ccd";
     def.workerCount = request.workers;
     world_ = b2CreateWorld(&def);
     scene.create(world_);
@@ -113,5 +115,5 @@ std::unique_ptr<RaceWorld> build(const RaceRequest& request) {
 
 int main(int argc, char** argv) {
   using namespace mink::bench;
-  return race_main(argc, argv, RaceEngine{{"box2d_v3"}, build});
+  return race_main(argc, argv, RaceEngine{{"box2d_v3", "box2d_v3_no_ccd"}, build});
 }

@@ -65,10 +65,6 @@ namespace {
 // A fast body's box this many times wider than the middle one's is scanned apart.
 constexpr Real kWideFactor = 8;
 
-Aabb merge(const Aabb& a, const Aabb& b) {
-  return {a.lower.cwiseMin(b.lower), a.upper.cwiseMax(b.upper)};
-}
-
 }  // namespace
 
 namespace {
@@ -320,51 +316,51 @@ void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
 }
 
 // A body moved fast: translation plus turn at the extent against its thinnest half-width.
-// Its box over the step, from the start and end poses, and whether its shapes' broadphase
-// boxes hold it, are found here, while its records are at hand.
-void WorldState::mark_if_fast(std::uint32_t si) {
+bool WorldState::moved_fast(std::uint32_t si) const {
   const Body& b = bodies[solver_to_body[si]];
-  if (b.type != BodyType::dynamic || b.shapes.empty()) return;
+  if (b.type != BodyType::dynamic || b.shapes.empty()) return false;
   const detail::SolverBody& sb = solver_bodies[si];
   const Real moved = std::sqrt(sb.dpx * sb.dpx + sb.dpy * sb.dpy) + std::abs(sb.turn) * b.extent;
-  if (!b.bullet && moved <= b.continuous_threshold * b.min_extent) return;
-  const Pose finish = b.pose();
-  const Pose start{b.center - Vec2(sb.dpx, sb.dpy) - b.previous_rotation.apply(b.local_center),
-                   b.previous_rotation};
-  bool first = true, covered = true;
-  Aabb swept;
-  for (const std::uint32_t s : b.shapes) {
-    const Shape& shape = shapes[s];
-    const Aabb box =
-        merge(compute_aabb(shape.geometry, start), compute_aabb(shape.geometry, finish));
-    swept = first ? box : merge(swept, box);
-    first = false;
-    covered =
-        covered && shape.proxy != null_proxy && broadphase.fat_aabb(shape.proxy).contains(box);
+  return b.bullet || moved > b.continuous_threshold * b.min_extent;
+}
+
+// Its shapes' broadphase boxes hold the box over the step when they held both ends: the ones
+// where the step began, as every box is held after a step, and the new ones unless they left.
+void WorldState::mark_fast(std::uint32_t si, const Aabb& swept) {
+  bool has_proxies = true;
+  for (const std::uint32_t s : bodies[solver_to_body[si]].shapes) {
+    has_proxies = has_proxies && shapes[s].proxy != null_proxy;
   }
   continuous.fast_mark[si] = 1;
   continuous.fast_box[si] = swept;
-  continuous.fast_covered[si] = covered;
+  continuous.fast_covered[si] = has_proxies && boxes_left[si] == 0;
 }
 
 void WorldState::solve_continuous() {
-  continuous.fast.clear();
   continuous.hits = 0;
   // The marked bodies, in body order (solver bodies are), so sensors meet them in a fixed
   // order.
+  std::size_t marked = 0;
+  for (const std::uint8_t mark : continuous.fast_mark) marked += mark;
+  if (continuous.fast.size() < marked) continuous.fast.resize(marked);
+  continuous.fast_count = marked;
+  const std::span<FastBody> fast_bodies = continuous.fast_bodies();
+  std::size_t next = 0;
   for (std::uint32_t si = 0; si < continuous.fast_mark.size(); ++si) {
     if (continuous.fast_mark[si] == 0) continue;
-    FastBody& fast = continuous.fast.emplace_back();
+    FastBody& fast = fast_bodies[next++];
     fast.body = solver_to_body[si];
     fast.solver_index = si;
     fast.bullet = bodies[fast.body].bullet;
     fast.box = continuous.fast_box[si];
     fast.covered = continuous.fast_covered[si] != 0;
+    fast.fraction = 1;
+    fast.has_sweep = false;
   }
-  counters.fast_bodies = continuous.fast.size();
-  if (continuous.fast.empty()) return;
+  counters.fast_bodies = marked;
+  if (marked == 0) return;
 
-  const auto count = static_cast<std::uint32_t>(continuous.fast.size());
+  const auto count = static_cast<std::uint32_t>(marked);
   continuous.candidates.resize(tasks.workers());
   // The sweep (two arc tangents) waits until a body has something to meet, which most fast
   // bodies, in free flight, do not; fast bodies meet each other on both their sweeps, so
@@ -372,7 +368,7 @@ void WorldState::solve_continuous() {
   if (def.continuous_fast_pairs) {
     tasks.parallel_for(count, 16, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
       for (std::uint32_t i = begin; i < end; ++i) {
-        FastBody& fast = continuous.fast[i];
+        FastBody& fast = fast_bodies[i];
         fast.set_sweep(solver_sweep(fast.solver_index));
         fast.rotation0 = Rotation::from_angle(fast.sweep.angle0);
         fast.rotation1 = Rotation::from_angle(fast.sweep.angle1);
@@ -387,21 +383,20 @@ void WorldState::solve_continuous() {
     std::vector<Real>& widths = continuous.widths;
     widths.resize(count);
     for (std::uint32_t i = 0; i < count; ++i) {
-      widths[i] = continuous.fast[i].box.upper.x() - continuous.fast[i].box.lower.x();
+      widths[i] = fast_bodies[i].box.upper.x() - fast_bodies[i].box.lower.x();
     }
     const auto middle = widths.begin() + count / 2;
     std::nth_element(widths.begin(), middle, widths.end());
     const Real wide = kWideFactor * *middle;
     for (std::uint32_t i = 0; i < count; ++i) {
-      const Aabb& box = continuous.fast[i].box;
+      const Aabb& box = fast_bodies[i].box;
       (box.upper.x() - box.lower.x() > wide ? continuous.fast_wide : continuous.fast_by_x)
           .push_back(i);
     }
   }
   std::sort(continuous.fast_by_x.begin(), continuous.fast_by_x.end(),
             [&](std::uint32_t x, std::uint32_t y) {
-              const Real ax = continuous.fast[x].box.lower.x(),
-                         bx = continuous.fast[y].box.lower.x();
+              const Real ax = fast_bodies[x].box.lower.x(), bx = fast_bodies[y].box.lower.x();
               return ax != bx ? ax < bx : x < y;
             });
   // Where a body's scan may start: no box before the first place whose running largest upper
@@ -410,7 +405,7 @@ void WorldState::solve_continuous() {
   continuous.fast_reach_x.resize(continuous.fast_by_x.size());
   Real reach = -std::numeric_limits<Real>::infinity();
   for (std::size_t k = 0; k < continuous.fast_by_x.size(); ++k) {
-    const Aabb& box = continuous.fast[continuous.fast_by_x[k]].box;
+    const Aabb& box = fast_bodies[continuous.fast_by_x[k]].box;
     continuous.fast_boxes_by_x[k] = box;
     reach = std::max(reach, box.upper.x());
     continuous.fast_reach_x[k] = reach;
@@ -419,7 +414,7 @@ void WorldState::solve_continuous() {
   tasks.parallel_for(count, 4, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
     std::vector<ProxyId> proxies;
     for (std::uint32_t i = begin; i < end; ++i) {
-      FastBody& fast = continuous.fast[i];
+      FastBody& fast = fast_bodies[i];
       // Static and kinematic shapes (everything, for a bullet) whose broadphase boxes meet the
       // body's box over the step: from its contacts when its shapes stayed within their
       // broadphase boxes (the broadphase paired them with all of those), else from queries.
@@ -475,7 +470,7 @@ void WorldState::solve_continuous() {
       // Other fast bodies (a bullet has met every dynamic shape already).
       if (fast.bullet || !def.continuous_fast_pairs) continue;
       const auto meet = [&](std::uint32_t j) {
-        const FastBody& other = continuous.fast[j];
+        const FastBody& other = fast_bodies[j];
         if (j == i || other.bullet) return;
         const Body& other_body = bodies[other.body];
         const Real limit = std::min(slow, other_body.continuous_threshold * other_body.min_extent);
@@ -496,20 +491,20 @@ void WorldState::solve_continuous() {
         if (box.overlaps(fast.box)) meet(continuous.fast_by_x[k]);
       }
       for (const std::uint32_t j : continuous.fast_wide) {
-        if (continuous.fast[j].box.overlaps(fast.box)) meet(j);
+        if (fast_bodies[j].box.overlaps(fast.box)) meet(j);
       }
     }
   });
 
   // Sensors see fast bodies along their sweeps.
   if (!sensors.empty()) {
-    for (FastBody& fast : continuous.fast) {
+    for (FastBody& fast : fast_bodies) {
       if (!fast.has_sweep) fast.set_sweep(solver_sweep(fast.solver_index));
     }
   }
   // Stopped bodies go back to where they first touched, keeping their velocity, and their
   // shapes' boxes with them.
-  for (FastBody& fast : continuous.fast) {
+  for (FastBody& fast : fast_bodies) {
     if (fast.fraction >= 1) continue;
     ++continuous.hits;
     Body& b = bodies[fast.body];

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "mink/broadphase/broadphase.hpp"
@@ -65,7 +66,12 @@ struct ContinuousState {
     fast_box.resize(solver_bodies);
     fast_covered.resize(solver_bodies);
   }
+  // The step's fast bodies: the first fast_count of `fast`, whose records are kept from step
+  // to step (only the fields a step starts from are set anew, not the whole record).
   std::vector<FastBody> fast;
+  std::size_t fast_count = 0;
+  std::span<FastBody> fast_bodies() { return {fast.data(), fast_count}; }
+  std::span<const FastBody> fast_bodies() const { return {fast.data(), fast_count}; }
   // Indices into `fast` of the boxes of common width, by lower x, with the running largest
   // upper x along them; and of the few far wider ones (a fast spinning bar), which would
   // stretch every scan, apart.

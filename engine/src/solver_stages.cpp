@@ -328,9 +328,15 @@ void WorldState::finish_body(std::uint32_t solver_index) {
   }
   write_back(solver_index);
   Body& b = bodies[solver_to_body[solver_index]];
+  // A fast body's box over the step: its shapes' boxes where the step began and where it ended
+  // (as Box2D v3 takes it, the speculative margin included).
+  const bool fast = def.enable_continuous && moved_fast(solver_index);
+  Aabb swept = fast && !b.shapes.empty() ? shapes[b.shapes.front()].aabb : Aabb{};
   for (const std::uint32_t s : b.shapes) {
     Shape& shape = shapes[s];
+    if (fast) swept = swept.merged(shape.aabb);
     update_shape_aabb(shape, b);
+    if (fast) swept = swept.merged(shape.aabb);
     if (shape.proxy != null_proxy && !broadphase.fat_aabb(shape.proxy).contains(shape.aabb)) {
       boxes_left[solver_index] = 1;
     }
@@ -344,7 +350,7 @@ void WorldState::finish_body(std::uint32_t solver_index) {
   } else {
     b.sleep_time += dt;
   }
-  if (def.enable_continuous) mark_if_fast(solver_index);
+  if (fast) mark_fast(solver_index, swept);
 }
 
 void WorldState::finish_step() {

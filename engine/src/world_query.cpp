@@ -110,7 +110,7 @@ std::optional<ShapeCastHit> World::cast_shape(const ShapeDef& def, const Pose& p
   const ShapeGeometry geometry = detail::make_geometry(def);
   const Pose end{pose.position + translation, pose.rotation};
   const Aabb start_box = compute_aabb(geometry, pose), end_box = compute_aabb(geometry, end);
-  const Aabb box{start_box.lower.cwiseMin(end_box.lower), start_box.upper.cwiseMax(end_box.upper)};
+  const Aabb box = start_box.merged(end_box);
   std::vector<ProxyId> proxies;
   w.broadphase.query(box, proxies);
   std::optional<ShapeCastHit> best;

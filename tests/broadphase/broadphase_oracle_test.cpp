@@ -339,6 +339,22 @@ TEST(SweepAndPruneOracle, MostlyStaticScene) {
   expect_pairs_over(layout, 51, 53, 20);
 }
 
+TEST(SweepAndPruneOracle, WallsOfSmallBoxes) {
+  // Two walls and a floor of unit boxes (the compounds scene's container), most proxies of
+  // them static: fixed queries near a wall meet a column of boxes on either axis.
+  Layout layout = uniform_layout();
+  layout.name = "walls";
+  layout.static_fraction = 0.6;
+  layout.spawn = [](std::mt19937_64& r) {
+    const Real roll = uniform(r, 0, 1);
+    const Real along = std::floor(uniform(r, 0, 40));
+    if (roll < 0.3) return box_at(Vec2(0, along), Vec2(0.5, 0.55));
+    if (roll < 0.6) return box_at(Vec2(along, 0), Vec2(0.55, 0.5));
+    return box_at(Vec2(uniform(r, 0, 40), uniform(r, 0, 40)), Vec2(0.3, 0.3));
+  };
+  expect_pairs_over(layout, 81, 84, 50);
+}
+
 TEST(SweepAndPruneOracle, FewMoversAmongManyResting) {
   // Few touched proxies per update: their entries are found by slot rather than by a pass
   // over the array.

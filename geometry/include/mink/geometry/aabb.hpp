@@ -21,6 +21,10 @@ struct Aabb {
     return lower.x() <= other.lower.x() && lower.y() <= other.lower.y() &&
            other.upper.x() <= upper.x() && other.upper.y() <= upper.y();
   }
+  /// The smallest box holding both.
+  Aabb merged(const Aabb& other) const {
+    return {lower.cwiseMin(other.lower), upper.cwiseMax(other.upper)};
+  }
   Aabb fattened(Real margin) const {
     return {lower - Vec2(margin, margin), upper + Vec2(margin, margin)};
   }
