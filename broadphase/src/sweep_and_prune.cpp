@@ -184,14 +184,16 @@ const SweepAndPrune::Entry* SweepAndPrune::gallop(const Entry* first, const Entr
   return first;
 }
 
-// sweep() for queries that come in array order: each band keeps where the previous query's
-// search ended and searches onward from there. A query whose search bound lies below the kept
-// one (rounding can reorder equal keys) starts afresh.
+// sweep() for queries that come in array order: each band keeps, in `cursors`, where the
+// previous query's search ended and searches onward from there. A query whose search bound lies
+// below the kept one (rounding can reorder equal keys, and a worker's next block may lie
+// before its last) starts afresh.
 template <typename Visit>
-void SweepAndPrune::resume_sweep(const Entry& q, Visit&& visit) {
+void SweepAndPrune::resume_sweep(const Entry& q, std::vector<Cursor>& cursors,
+                                 Visit&& visit) const {
   sweep_bands(q, visit, [&](std::uint32_t band, const Entry* band_end, std::uint64_t start) {
     const Entry* const entries = entries_.data();
-    Cursor& cursor = cursors_[band];
+    Cursor& cursor = cursors[band];
     if (cursor.stamp != cursor_stamp_ || start < cursor.key) {
       cursor = {cursor_stamp_, start, band_begin_[band]};
     }
@@ -227,12 +229,16 @@ void SweepAndPrune::band_starts(std::vector<std::uint32_t>& band_begin) const {
 }
 
 void SweepAndPrune::update_pairs(PairEvents& events) {
+  update_pairs(events, Ranges{});
+}
+
+void SweepAndPrune::update_pairs(PairEvents& events, const Ranges& ranges) {
   events.begun.clear();
   events.ended.clear();
   if (touched_ids_.empty()) return;
   find_ended(events);
   update_structure();
-  find_begun(events);
+  find_begun(events, ranges);
   for (const ProxyId id : touched_ids_) {
     if ((touched_[id] & (kCreated | kDestroyed)) != 0 || store_.is_fixed(id)) fixed_stale_ = true;
     if ((touched_[id] & kDestroyed) == 0) committed_[id] = store_.fat(id);
@@ -295,38 +301,69 @@ void SweepAndPrune::collect_touched_slots(std::size_t count,
   std::sort(out.begin(), out.end());
 }
 
-void SweepAndPrune::find_begun(PairEvents& events) {
-  // Banded entries are searched in array order, so each band's search resumes where the
-  // previous one stopped; oversized ones sweep on their own.
+void SweepAndPrune::find_begun(PairEvents& events, const Ranges& ranges) {
+  const auto keep = [&](const std::vector<ProxyPair>& found) {
+    pairs_.insert(pairs_.end(), found.begin(), found.end());
+    events.begun.insert(events.begun.end(), found.begin(), found.end());
+  };
+  // Oversized entries sweep on their own.
   std::size_t banded = 0;
+  begun_blocks_.resize(1);
+  begun_blocks_[0].clear();
   for (const ProxyId m : touched_ids_) {
     if ((touched_[m] & kDestroyed) != 0) continue;
     const std::uint32_t slot = slot_[m];
     if ((slot & kOversizedBit) != 0) {
-      report_begun(m, oversized_[slot & ~kOversizedBit], events,
+      report_begun(m, oversized_[slot & ~kOversizedBit], begun_blocks_[0],
                    [&](const Entry& q, auto&& v) { sweep(q, v); });
     } else {
       ++banded;
     }
   }
+  keep(begun_blocks_[0]);
+  // Banded entries are searched in array order, so each band's search resumes where the
+  // previous one stopped; in blocks, spread over the workers, each block's pairs kept apart
+  // and taken in block order, so the pairs come in the same order on any number of workers.
   collect_touched_slots(banded, query_slots_);
   ++cursor_stamp_;
-  if (cursors_.size() < band_count_) cursors_.resize(band_count_);
-  // The previous boxes are indexed by id, so in array order they are scattered: fetched a
-  // few queries ahead.
-  constexpr std::size_t kAhead = 4;
-  const std::size_t count = query_slots_.size();
-  for (std::size_t k = 0; k < count; ++k) {
-    if (k + kAhead < count) {
-      __builtin_prefetch(&committed_[entries_[query_slots_[k + kAhead]].id]);
+  constexpr std::uint32_t kBlock = 256;
+  const auto count = static_cast<std::uint32_t>(query_slots_.size());
+  const std::uint32_t blocks = (count + kBlock - 1) / kBlock;
+  begun_blocks_.resize(std::max<std::size_t>(blocks, 1));
+  const std::uint32_t workers = ranges.run ? std::max<std::uint32_t>(ranges.workers, 1) : 1;
+  if (worker_cursors_.size() < workers) worker_cursors_.resize(workers);
+  const auto search = [&](std::uint32_t first_block, std::uint32_t end_block,
+                          std::uint32_t worker) {
+    std::vector<Cursor>& cursors = worker_cursors_[worker];
+    if (cursors.size() < band_count_) cursors.resize(band_count_);
+    for (std::uint32_t block = first_block; block < end_block; ++block) {
+      std::vector<ProxyPair>& found = begun_blocks_[block];
+      found.clear();
+      const std::uint32_t begin = block * kBlock;
+      const std::uint32_t end = std::min(count, begin + kBlock);
+      // The previous boxes are indexed by id, so in array order they are scattered: fetched a
+      // few queries ahead.
+      constexpr std::uint32_t kAhead = 4;
+      for (std::uint32_t k = begin; k < end; ++k) {
+        if (k + kAhead < end)
+          __builtin_prefetch(&committed_[entries_[query_slots_[k + kAhead]].id]);
+        const Entry& q = entries_[query_slots_[k]];
+        report_begun(q.id, q, found,
+                     [&](const Entry& query, auto&& v) { resume_sweep(query, cursors, v); });
+      }
     }
-    const Entry& q = entries_[query_slots_[k]];
-    report_begun(q.id, q, events, [&](const Entry& query, auto&& v) { resume_sweep(query, v); });
+  };
+  if (workers > 1 && blocks > 1) {
+    ranges.run(blocks, 1, search);
+  } else {
+    search(0, blocks, 0);
   }
+  for (std::uint32_t block = 0; block < blocks; ++block) keep(begun_blocks_[block]);
 }
 
 template <typename Sweep>
-void SweepAndPrune::report_begun(ProxyId m, const Entry& q, PairEvents& events, Sweep&& sweep) {
+void SweepAndPrune::report_begun(ProxyId m, const Entry& q, std::vector<ProxyPair>& found,
+                                 Sweep&& sweep) const {
   const bool m_new = (touched_[m] & kCreated) != 0;
   const Entry before = m_new ? q : oriented(committed_[m]);
   sweep(q, [&](const Entry& e) {
@@ -338,11 +375,7 @@ void SweepAndPrune::report_begun(ProxyId m, const Entry& q, PairEvents& events, 
     const bool existed =
         !m_new && (touch_o != 0 ? (touch_o & kCreated) == 0 && committed_[m].overlaps(committed_[o])
                                 : overlap(before, e));
-    if (!existed) {
-      const ProxyPair pair = ordered(m, o);
-      pairs_.push_back(pair);
-      events.begun.push_back(pair);
-    }
+    if (!existed) found.push_back(ordered(m, o));
   });
 }
 
@@ -670,12 +703,16 @@ void SweepAndPrune::fields(Archive& archive) {
   archive(committed_);
   archive(touched_);
   archive(touched_ids_);
+  // The search cursors say nothing past the update that set them (each update stamps its
+  // own): written as none; a snapshot's own are read into loaded_cursors_, checked and left.
+  std::vector<Cursor>& cursors = loaded_cursors_;
   if constexpr (Archive::loading) {
-    cursors_.resize(archive.count(sizeof(Cursor) / 2));
+    cursors.resize(archive.count(sizeof(Cursor) / 2));
   } else {
-    archive.count(cursors_.size());
+    cursors.clear();
+    archive.count(cursors.size());
   }
-  for (Cursor& cursor : cursors_) {
+  for (Cursor& cursor : cursors) {
     archive(cursor.stamp);
     archive(cursor.key);
     archive(cursor.index);
@@ -804,7 +841,7 @@ void SweepAndPrune::check_loaded_state(ByteReader& in) const {
   if (cursor_stamp_ == std::numeric_limits<std::uint64_t>::max()) {
     in.fail("a broadphase cursor stamp at its largest value");
   }
-  for (const Cursor& cursor : cursors_) {
+  for (const Cursor& cursor : loaded_cursors_) {
     if (cursor.stamp > cursor_stamp_) in.fail("a broadphase cursor stamped ahead of its sweeps");
   }
 }
@@ -815,6 +852,9 @@ void SweepAndPrune::save(SaveArchive& archive) const {
 void SweepAndPrune::load(LoadArchive& archive) {
   fields(archive);
   refresh_fixed();
+  // Stamps of the state before may come again.
+  worker_cursors_.clear();
+  loaded_cursors_.clear();
 }
 
 }  // namespace mink

@@ -164,7 +164,16 @@ void WorldState::update_pairs() {
   pending_proxy_destroys.clear();
   pair_events.begun.clear();
   pair_events.ended.clear();
-  broadphase.update_pairs(pair_events);
+  SweepAndPrune::Ranges ranges;
+  ranges.workers = tasks.workers();
+  ranges.run = [&](std::uint32_t count, std::uint32_t min_range,
+                   const SweepAndPrune::RangeBody& body) {
+    tasks.parallel_for(count, min_range,
+                       [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
+                         body(begin, end, worker);
+                       });
+  };
+  broadphase.update_pairs(pair_events, ranges);
   // The broadphase reports pairs in its sweep order, which follows the coordinates rounded to
   // floats; taken in id order instead, contacts are made and removed, and so coloured and
   // solved, in an order that does not depend on where the scene lies (10^7 m from the origin

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "mink/broadphase/broadphase.hpp"
@@ -34,6 +35,18 @@ class SweepAndPrune final : public Broadphase {
   void destroy_proxy(ProxyId id) override;
   bool move_proxy(ProxyId id, const Aabb& tight) override;
   void update_pairs(PairEvents& events) override;
+
+  /// Runs body(begin, end, worker) over ranges covering [0, count), each of at least
+  /// min_range items, with worker below `workers` (no two ranges running at once share one),
+  /// and returns when all have run.
+  using RangeBody = std::function<void(std::uint32_t, std::uint32_t, std::uint32_t)>;
+  struct Ranges {
+    std::uint32_t workers = 1;
+    std::function<void(std::uint32_t count, std::uint32_t min_range, const RangeBody& body)> run;
+  };
+  /// update_pairs() with its searches for new pairs spread over `ranges`' workers; the pairs
+  /// and events are the same, in the same order, on any number of them.
+  void update_pairs(PairEvents& events, const Ranges& ranges);
 
   const std::vector<ProxyPair>& pairs() const override { return pairs_; }
   const Aabb& fat_aabb(ProxyId id) const override;
@@ -72,6 +85,12 @@ class SweepAndPrune final : public Broadphase {
     std::uint16_t is_static;  ///< static: never pairs with another static entry
     std::uint16_t is_fixed;   ///< static or kinematic: query_fixed() finds it
   };
+  /// Per band: where a search ended (valid while stamp is the update's cursor_stamp_).
+  struct Cursor {
+    std::uint64_t stamp = 0;
+    std::uint64_t key = 0;
+    std::uint32_t index = 0;
+  };
   /// What happened to a proxy since the last update_pairs.
   enum Touch : std::uint8_t { kMoved = 1, kCreated = 2, kDestroyed = 4 };
   static constexpr std::uint32_t kNoSlot = ~std::uint32_t{0};
@@ -95,17 +114,17 @@ class SweepAndPrune final : public Broadphase {
 
   static const Entry* gallop(const Entry* first, const Entry* last, std::uint64_t key);
   template <typename Visit>
-  void resume_sweep(const Entry& entry, Visit&& visit);
-  /// Reports the pairs of m (whose entry is q) that sweep(q, visit) finds and that did not
-  /// exist before.
+  void resume_sweep(const Entry& entry, std::vector<Cursor>& cursors, Visit&& visit) const;
+  /// Appends to `found` the pairs of m (whose entry is q) that sweep(q, visit) finds and that
+  /// did not exist before.
   template <typename Sweep>
-  void report_begun(ProxyId m, const Entry& q, PairEvents& events, Sweep&& sweep);
+  void report_begun(ProxyId m, const Entry& q, std::vector<ProxyPair>& found, Sweep&& sweep) const;
 
   /// The slots of the touched proxies in entries_, ascending; `count` of them are expected.
   void collect_touched_slots(std::size_t count, std::vector<std::uint32_t>& out) const;
   void find_ended(PairEvents& events);
   void update_structure();
-  void find_begun(PairEvents& events);
+  void find_begun(PairEvents& events, const Ranges& ranges);
   void remove_entry(ProxyId id);
   void place_entry(const Entry& entry);
   /// Widens the sweep reach for a new entry and counts it if it falls outside the bands.
@@ -144,14 +163,12 @@ class SweepAndPrune final : public Broadphase {
   std::vector<std::uint32_t> changed_slots_;
   std::vector<Entry> appended_;
   std::vector<std::uint32_t> query_slots_;
-  /// Per band: where resume_sweep's last search there ended (valid while stamp matches).
-  struct Cursor {
-    std::uint64_t stamp = 0;
-    std::uint64_t key = 0;
-    std::uint32_t index = 0;
-  };
-  std::vector<Cursor> cursors_;
-  std::uint64_t cursor_stamp_ = 0;
+  /// Per worker and band: where resume_sweep's last search there ended.
+  std::vector<std::vector<Cursor>> worker_cursors_;
+  /// Per block of find_begun's searches: the pairs it found.
+  std::vector<std::vector<ProxyPair>> begun_blocks_;
+  std::uint64_t cursor_stamp_ = 0;      ///< this update's: a cursor of another is stale
+  std::vector<Cursor> loaded_cursors_;  ///< a loaded snapshot's, until checked
   std::size_t dead_count_ = 0;
 
   // Layout, chosen at each rebuild.
