@@ -13,9 +13,15 @@ namespace {
 // The most a moved box reaches ahead, in margins.
 constexpr Real kPredictionLimit = 4;
 
+// The largest margin: with its reach ahead it stays far below what a double holds.
+constexpr Real kMostMargin = 1e300;
+
+std::string describe(const Vec2& point) {
+  return "(" + std::to_string(point.x()) + ", " + std::to_string(point.y()) + ")";
+}
+
 std::string describe(const Aabb& box) {
-  return "[(" + std::to_string(box.lower.x()) + ", " + std::to_string(box.lower.y()) + "), (" +
-         std::to_string(box.upper.x()) + ", " + std::to_string(box.upper.y()) + ")]";
+  return "[" + describe(box.lower) + ", " + describe(box.upper) + "]";
 }
 
 // What create_proxy accepts, and so what a loaded store may hold.
@@ -25,6 +31,30 @@ bool known_kind(ProxyKind kind) {
 }
 bool valid_size(Real size) {
   return size == kSizeOfBox || (std::isfinite(size) && size >= 0);
+}
+
+bool valid_box(const Aabb& box) {
+  return box.lower.allFinite() && box.upper.allFinite() && box.lower.x() <= box.upper.x() &&
+         box.lower.y() <= box.upper.y();
+}
+
+// What is wrong with a fattening, or nothing. Its margin and its reach ahead (a few margins)
+// are added to boxes within the world: a margin beyond kMostMargin would take them past what
+// a box can hold.
+std::string fattening_error(const Fattening& fattening) {
+  if (!std::isfinite(fattening.margin) || fattening.margin < 0 || fattening.margin > kMostMargin) {
+    return "broadphase margin " + std::to_string(fattening.margin) +
+           " is not a finite non-negative number up to " + std::to_string(kMostMargin);
+  }
+  if (std::isnan(fattening.size_fraction) || fattening.size_fraction < 0) {
+    return "broadphase margin size fraction " + std::to_string(fattening.size_fraction) +
+           " is not non-negative";
+  }
+  if (!std::isfinite(fattening.prediction_steps) || fattening.prediction_steps < 0) {
+    return "broadphase prediction steps " + std::to_string(fattening.prediction_steps) +
+           " is not a finite non-negative number";
+  }
+  return {};
 }
 
 }  // namespace
@@ -48,18 +78,8 @@ void ProxyStore::check_point(const Vec2& point, std::string_view operation) {
 }
 
 ProxyStore::ProxyStore(const Fattening& fattening) : fattening_(fattening) {
-  if (!std::isfinite(fattening.margin) || fattening.margin < 0) {
-    throw InvalidArgumentError("broadphase margin " + std::to_string(fattening.margin) +
-                               " is not a finite non-negative number");
-  }
-  if (std::isnan(fattening.size_fraction) || fattening.size_fraction < 0) {
-    throw InvalidArgumentError("broadphase margin size fraction " +
-                               std::to_string(fattening.size_fraction) + " is not non-negative");
-  }
-  if (!std::isfinite(fattening.prediction_steps) || fattening.prediction_steps < 0) {
-    throw InvalidArgumentError("broadphase prediction steps " +
-                               std::to_string(fattening.prediction_steps) +
-                               " is not a finite non-negative number");
+  if (const std::string wrong = fattening_error(fattening); !wrong.empty()) {
+    throw InvalidArgumentError(wrong);
   }
 }
 
@@ -188,6 +208,19 @@ void ProxyStore::fields(Archive& archive) {
     }
     for (const Real size : size_) {
       if (!valid_size(size)) archive.in.fail("a broadphase proxy of size " + std::to_string(size));
+    }
+    if (const std::string wrong = fattening_error(fattening_); !wrong.empty()) {
+      archive.in.fail(wrong);
+    }
+    for (std::size_t id = 0; id < n; ++id) {
+      if (!last_lower_[id].allFinite()) {
+        archive.in.fail("a broadphase proxy whose last box corner " + describe(last_lower_[id]) +
+                        " is not finite");
+      }
+      if (alive_[id] != 0 && !valid_box(fat_[id])) {
+        archive.in.fail("a broadphase proxy whose box " + describe(fat_[id]) +
+                        " is not finite or has its lower corner above its upper corner");
+      }
     }
     // create() hands out free ids and release_destroyed() frees destroyed ones, so each dead
     // id is in exactly one of the two lists and no live one is in either; the count sizes the

@@ -481,7 +481,8 @@ TEST(FuzzFindings, TheSnapshotRestoreCorpusIsRefusedOrStepsFinite) {
                                                   "a-proxy-count-beyond-its-proxies",
                                                   "a-live-proxy-touched-as-destroyed",
                                                   "a-search-cursor-stamped-ahead",
-                                                  "a-shape-of-another-type"};
+                                                  "a-shape-of-another-type",
+                                                  "a-proxy-whose-last-corner-is-nan"};
   int refused = 0, stepped = 0;
   for (const auto& entry : std::filesystem::directory_iterator(corpus)) {
     SCOPED_TRACE(entry.path().filename().string());
