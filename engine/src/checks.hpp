@@ -45,6 +45,12 @@ inline bool within_settings(const Vec2& v) {
   return within_settings(v.x()) && within_settings(v.y());
 }
 
+// A friction or restitution: non-negative and within max_setting_magnitude, so that a
+// contact's mix of two (the root of their product, or the larger) stays finite.
+inline bool valid_coefficient(Real v) {
+  return v >= 0 && within_settings(v);
+}
+
 // `value` to all 17 significant digits: for messages about values too close to a limit to
 // show in fewer.
 inline std::string exact_number(Real value) {

@@ -349,6 +349,15 @@ void check_material_value(ShapeId id, Real value, const char* what) {
   }
 }
 
+void check_coefficient_value(ShapeId id, Real value, const char* what) {
+  if (!detail::valid_coefficient(value)) {
+    throw InvalidArgumentError(std::string(what) + " of " + to_string(id) +
+                               " must be non-negative and within max_setting_magnitude (1e9), "
+                               "got " +
+                               detail::exact_number(value));
+  }
+}
+
 }  // namespace
 
 void World::set_shape_density(ShapeId id, Real density) {
@@ -382,14 +391,14 @@ void remix_contacts(WorldState& w, std::uint32_t shape_index) {
 
 void World::set_shape_friction(ShapeId id, Real friction) {
   const detail::RecordScope record(*this, detail::Call::set_shape_friction, id, friction);
-  check_material_value(id, friction, "set_shape_friction");
+  check_coefficient_value(id, friction, "set_shape_friction");
   state_->shape(id).friction = friction;
   remix_contacts(*state_, id.index);
 }
 
 void World::set_shape_restitution(ShapeId id, Real restitution) {
   const detail::RecordScope record(*this, detail::Call::set_shape_restitution, id, restitution);
-  check_material_value(id, restitution, "set_shape_restitution");
+  check_coefficient_value(id, restitution, "set_shape_restitution");
   state_->shape(id).restitution = restitution;
   remix_contacts(*state_, id.index);
 }

@@ -109,6 +109,12 @@ void check_material(Real value, const char* name) {
       std::string("ShapeDef.") + name + " must be finite and non-negative, got " + number(value));
 }
 
+void check_coefficient(Real value, const char* name) {
+  require(detail::valid_coefficient(value),
+          std::string("ShapeDef.") + name +
+              " must be non-negative and within max_setting_magnitude (1e9), got " + number(value));
+}
+
 void check_points_finite(const std::vector<Vec2>& points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!std::isfinite(points[i].x()) || !std::isfinite(points[i].y())) {
@@ -128,8 +134,8 @@ void check_point_count(const ShapeDef& def, std::size_t count) {
 
 void check_shape_def(const ShapeDef& def) {
   check_material(def.density, "density");
-  check_material(def.friction, "friction");
-  check_material(def.restitution, "restitution");
+  check_coefficient(def.friction, "friction");
+  check_coefficient(def.restitution, "restitution");
   require(std::isfinite(def.radius) && def.radius >= 0,
           "ShapeDef.radius must be finite and non-negative, got " + number(def.radius));
   require(
@@ -194,8 +200,8 @@ ConvexHull make_shape_hull(const ShapeDef& def) {
                                " is not a polygon");
   }
   check_material(def.density, "density");
-  check_material(def.friction, "friction");
-  check_material(def.restitution, "restitution");
+  check_coefficient(def.friction, "friction");
+  check_coefficient(def.restitution, "restitution");
   if (def.scale) {
     if (!std::isfinite(def.scale->fixed_point.x()) || !std::isfinite(def.scale->fixed_point.y())) {
       throw InvalidArgumentError("ShapeDef.scale.fixed_point must be finite");

@@ -217,8 +217,9 @@ void check_shape(const Shape& shape, const std::string& what, ByteReader& in) {
   static_assert(std::variant_size_v<ShapeGeometry> == std::size(kTypeOf));
   if (kTypeOf[shape.geometry.index()] != shape.type) in.fail(what + " is not of its type");
   if (shape.algorithm > HullAlgorithm::monotone_chain) in.fail(what + " has no hull algorithm");
-  if (!(shape.density >= 0 && shape.friction >= 0 && shape.restitution >= 0)) {
-    in.fail(what + " has a negative density, friction or restitution");
+  if (!(shape.density >= 0 && valid_coefficient(shape.friction) &&
+        valid_coefficient(shape.restitution))) {
+    in.fail(what + " has a negative density, or a friction or restitution beyond the API's");
   }
   if (!(shape.aabb.lower.x() <= shape.aabb.upper.x() &&
         shape.aabb.lower.y() <= shape.aabb.upper.y())) {
@@ -252,7 +253,7 @@ void check_joint(const Joint& joint, const std::string& what, ByteReader& in) {
 // A contact's points and cached poses lie in the world, its normals are unit vectors: the
 // solver's lever arms and the manifold reuse take them as they are.
 void check_contact(const Contact& c, const std::string& what, ByteReader& in) {
-  if (!all_finite(c) || !(c.friction >= 0 && c.restitution >= 0)) {
+  if (!all_finite(c) || !(valid_coefficient(c.friction) && valid_coefficient(c.restitution))) {
     in.fail(what + " holds a non-finite or negative value");
   }
   const Manifold& m = c.manifold;

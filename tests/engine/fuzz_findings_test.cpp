@@ -462,6 +462,48 @@ TEST(FuzzFindings, HugeVelocitiesAndPushesGoAtTheSpeedLimit) {
   EXPECT_EQ(world.linear_velocity(spun), Vec2(0, limit));
 }
 
+// Two shapes of friction 1e300 touching mixed to an infinite contact friction (the root of
+// the product overflowed), and the world's own snapshot was refused (the World API harness
+// with its extreme values). Friction and restitution are refused beyond max_setting_magnitude
+// (by the ShapeDef checks, the setters and the scene reader); at the limit, two such shapes
+// touch, step finite and restore.
+TEST(FuzzFindings, FrictionAndRestitutionBeyondTheSettingLimitAreRefused) {
+  World world;
+  ShapeDef rough = ShapeDef::box(0.5, 0.5);
+  rough.friction = 1e300;
+  const BodyId body = world.create_body({});
+  std::string error =
+      test::error_of<InvalidArgumentError>([&] { world.create_shape(body, rough); });
+  EXPECT_NE(error.find("ShapeDef.friction"), std::string::npos) << error;
+  EXPECT_NE(error.find("max_setting_magnitude"), std::string::npos) << error;
+  rough.friction = 0;
+  rough.restitution = std::numeric_limits<Real>::max();
+  error = test::error_of<InvalidArgumentError>([&] { world.create_shape(body, rough); });
+  EXPECT_NE(error.find("ShapeDef.restitution"), std::string::npos) << error;
+
+  const BodyId ground = test::add_box(world, {0, 0}, 5, 0, max_setting_magnitude);
+  world.set_body_type(ground, BodyType::static_body);
+  const BodyId box =
+      test::add_box(world, {0, 5.45}, 0.5, 0, max_setting_magnitude, max_setting_magnitude);
+  const ShapeId box_shape = world.body_shapes(box).front();
+  error = test::error_of<InvalidArgumentError>([&] { world.set_shape_friction(box_shape, 2e9); });
+  EXPECT_NE(error.find("set_shape_friction"), std::string::npos) << error;
+  error =
+      test::error_of<InvalidArgumentError>([&] { world.set_shape_restitution(box_shape, 1e300); });
+  EXPECT_NE(error.find("set_shape_restitution"), std::string::npos) << error;
+  for (int i = 0; i < 30; ++i) world.step();
+  EXPECT_GT(world.counters().touching_contacts, 0u);
+  EXPECT_TRUE(all_finite(world));
+  EXPECT_EQ(World::from_snapshot(world.snapshot()).state_hash(), world.state_hash());
+
+  const std::string scene = R"({"format": "minkowski-scene", "version": 1, "bodies": [
+      {"type": "dynamic", "position": [0, 2],
+       "shapes": [{"circle": {"radius": 0.25}, "friction": 1e300}]}]})";
+  const std::string scene_error =
+      test::error_of<SceneFileError>([&] { (void)parse_scene_json(scene); });
+  EXPECT_NE(scene_error.find("friction"), std::string::npos) << scene_error;
+}
+
 // Every input in the snapshot-restore seed corpus, as that harness reads it (this build's
 // header put around the state, size and checksum made to fit; whole bytes when they start with
 // 'M'): refused with a SnapshotError, or a world that steps finite at 1 and 2 workers alike.

@@ -39,11 +39,11 @@ struct ShapeDef {
   bool loop = false;                              ///< chains only: join the last point to the first
   HullAlgorithm algorithm = HullAlgorithm::chan;  ///< polygons: which algorithm hulls `points`
   Real density = 1;                               ///< kg/m^2, >= 0
-  Real friction = 0.6;                            ///< Coulomb coefficient, >= 0
-  Real restitution = 0;                           ///< bounciness, >= 0 (0: none)
-  std::optional<ShapeScale> scale;                ///< polygons: applied to `points` before hulling
-  Filter filter;                                  ///< which shapes it may touch
-  bool is_sensor = false;                         ///< detects overlap (sensor events), never pushes
+  Real friction = 0.6;                ///< Coulomb coefficient, in [0, max_setting_magnitude]
+  Real restitution = 0;               ///< bounciness, in [0, max_setting_magnitude] (0: none)
+  std::optional<ShapeScale> scale;    ///< polygons: applied to `points` before hulling
+  Filter filter;                      ///< which shapes it may touch
+  bool is_sensor = false;             ///< detects overlap (sensor events), never pushes
   bool enable_contact_events = true;  ///< begin/end contact events for this shape's pairs
   bool enable_sensor_events = true;   ///< sensors see this shape (and a sensor reports at all)
   bool enable_hit_events = false;     ///< hit events for this shape's pairs
@@ -71,7 +71,8 @@ struct ShapeDef {
 void check_shape_def(const ShapeDef& def);
 
 /// @brief The hull a polygon ShapeDef makes (scale, then hull), in body-local coordinates.
-/// @throws InvalidArgumentError for a negative or non-finite density, friction or restitution
+/// @throws InvalidArgumentError for a negative or non-finite density, or a friction or
+/// restitution outside [0, max_setting_magnitude]
 /// or a bad scale
 /// @throws NonFiniteInputError, DegenerateInputError (the hull errors) for bad points
 ConvexHull make_shape_hull(const ShapeDef& def);

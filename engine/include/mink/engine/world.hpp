@@ -250,8 +250,10 @@ class World {
   /// shape a positive mass or inertia below min_mass_property.
   void set_shape_density(ShapeId id, Real density);
   /// @brief Changes the friction of the shape and of its existing contacts.
+  /// @throws InvalidArgumentError outside [0, max_setting_magnitude]
   void set_shape_friction(ShapeId id, Real friction);
   /// @brief Changes the restitution of the shape and of its existing contacts.
+  /// @throws InvalidArgumentError outside [0, max_setting_magnitude]
   void set_shape_restitution(ShapeId id, Real restitution);
   /// @brief Changes the filter; the shape's pairs are tested again in the next step.
   void set_shape_filter(ShapeId id, const Filter& filter);
