@@ -42,6 +42,11 @@ void check_indices(const WorldState& w, ByteReader& in) {
       in.fail("shape " + std::to_string(i) + "'s broadphase proxy " + std::to_string(s.proxy) +
               " is not one of its own");
     }
+    // Its box lies within its proxy's, as after every step and call: continuous collision
+    // takes a body's broadphase boxes to cover it over a step that left none of them.
+    if (s.alive && s.proxy != null_proxy && !w.broadphase.fat_aabb(s.proxy).contains(s.aabb)) {
+      in.fail("shape " + std::to_string(i) + "'s box is not within its broadphase box");
+    }
   }
   for (const Contact& c : w.contacts) {
     below(c.body_a, bodies, "a contact's body");
