@@ -302,25 +302,19 @@ void SweepAndPrune::collect_touched_slots(std::size_t count,
 }
 
 void SweepAndPrune::find_begun(PairEvents& events, const Ranges& ranges) {
-  const auto keep = [&](const std::vector<ProxyPair>& found) {
-    pairs_.insert(pairs_.end(), found.begin(), found.end());
-    events.begun.insert(events.begun.end(), found.begin(), found.end());
-  };
-  // Oversized entries sweep on their own.
+  // The begun pairs collect in events.begun (empty until now) and join the pair list at the
+  // end. Oversized entries sweep on their own.
   std::size_t banded = 0;
-  begun_blocks_.resize(1);
-  begun_blocks_[0].clear();
   for (const ProxyId m : touched_ids_) {
     if ((touched_[m] & kDestroyed) != 0) continue;
     const std::uint32_t slot = slot_[m];
     if ((slot & kOversizedBit) != 0) {
-      report_begun(m, oversized_[slot & ~kOversizedBit], begun_blocks_[0],
+      report_begun(m, oversized_[slot & ~kOversizedBit], events.begun,
                    [&](const Entry& q, auto&& v) { sweep(q, v); });
     } else {
       ++banded;
     }
   }
-  keep(begun_blocks_[0]);
   // Banded entries are searched in array order, so each band's search resumes where the
   // previous one stopped; in blocks, spread over the workers, each block's pairs kept apart
   // and taken in block order, so the pairs come in the same order on any number of workers.
@@ -329,7 +323,7 @@ void SweepAndPrune::find_begun(PairEvents& events, const Ranges& ranges) {
   constexpr std::uint32_t kBlock = 256;
   const auto count = static_cast<std::uint32_t>(query_slots_.size());
   const std::uint32_t blocks = (count + kBlock - 1) / kBlock;
-  begun_blocks_.resize(std::max<std::size_t>(blocks, 1));
+  begun_blocks_.resize(blocks);
   const std::uint32_t workers = ranges.run ? std::max<std::uint32_t>(ranges.workers, 1) : 1;
   if (worker_cursors_.size() < workers) worker_cursors_.resize(workers);
   const auto search = [&](std::uint32_t first_block, std::uint32_t end_block,
@@ -358,7 +352,11 @@ void SweepAndPrune::find_begun(PairEvents& events, const Ranges& ranges) {
   } else {
     search(0, blocks, 0);
   }
-  for (std::uint32_t block = 0; block < blocks; ++block) keep(begun_blocks_[block]);
+  for (std::uint32_t block = 0; block < blocks; ++block) {
+    events.begun.insert(events.begun.end(), begun_blocks_[block].begin(),
+                        begun_blocks_[block].end());
+  }
+  pairs_.insert(pairs_.end(), events.begun.begin(), events.begun.end());
 }
 
 template <typename Sweep>
@@ -704,12 +702,11 @@ void SweepAndPrune::fields(Archive& archive) {
   archive(touched_);
   archive(touched_ids_);
   // The search cursors say nothing past the update that set them (each update stamps its
-  // own): written as none; a snapshot's own are read into loaded_cursors_, checked and left.
-  std::vector<Cursor>& cursors = loaded_cursors_;
+  // own): written as none; a snapshot's own are read, checked and left.
+  std::vector<Cursor> cursors;
   if constexpr (Archive::loading) {
     cursors.resize(archive.count(sizeof(Cursor) / 2));
   } else {
-    cursors.clear();
     archive.count(cursors.size());
   }
   for (Cursor& cursor : cursors) {
@@ -718,6 +715,13 @@ void SweepAndPrune::fields(Archive& archive) {
     archive(cursor.index);
   }
   archive(cursor_stamp_);
+  if constexpr (Archive::loading) {
+    for (const Cursor& cursor : cursors) {
+      if (cursor.stamp > cursor_stamp_) {
+        archive.in.fail("a broadphase cursor stamped ahead of its sweeps");
+      }
+    }
+  }
   std::uint64_t dead = dead_count_, clamped = clamped_count_, rebuilds = rebuild_count_;
   archive(dead);
   archive(built_);
@@ -841,9 +845,6 @@ void SweepAndPrune::check_loaded_state(ByteReader& in) const {
   if (cursor_stamp_ == std::numeric_limits<std::uint64_t>::max()) {
     in.fail("a broadphase cursor stamp at its largest value");
   }
-  for (const Cursor& cursor : loaded_cursors_) {
-    if (cursor.stamp > cursor_stamp_) in.fail("a broadphase cursor stamped ahead of its sweeps");
-  }
 }
 
 void SweepAndPrune::save(SaveArchive& archive) const {
@@ -854,7 +855,6 @@ void SweepAndPrune::load(LoadArchive& archive) {
   refresh_fixed();
   // Stamps of the state before may come again.
   worker_cursors_.clear();
-  loaded_cursors_.clear();
 }
 
 }  // namespace mink

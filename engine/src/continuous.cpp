@@ -65,10 +65,6 @@ namespace {
 // A fast body's box this many times wider than the middle one's is scanned apart.
 constexpr Real kWideFactor = 8;
 
-}  // namespace
-
-namespace {
-
 // A shape's middle: the point a chain segment tells its front from its back by.
 Vec2 shape_middle(const ShapeGeometry& geometry) {
   struct Middle {
@@ -322,18 +318,6 @@ bool WorldState::moved_fast(std::uint32_t si) const {
   const detail::SolverBody& sb = solver_bodies[si];
   const Real moved = std::sqrt(sb.dpx * sb.dpx + sb.dpy * sb.dpy) + std::abs(sb.turn) * b.extent;
   return b.bullet || moved > b.continuous_threshold * b.min_extent;
-}
-
-// Its shapes' broadphase boxes hold the box over the step when they held both ends: the ones
-// where the step began, as every box is held after a step, and the new ones unless they left.
-void WorldState::mark_fast(std::uint32_t si, const Aabb& swept) {
-  bool has_proxies = true;
-  for (const std::uint32_t s : bodies[solver_to_body[si]].shapes) {
-    has_proxies = has_proxies && shapes[s].proxy != null_proxy;
-  }
-  continuous.fast_mark[si] = 1;
-  continuous.fast_box[si] = swept;
-  continuous.fast_covered[si] = has_proxies && boxes_left[si] == 0;
 }
 
 void WorldState::solve_continuous() {

@@ -66,6 +66,11 @@ struct ContinuousState {
     fast_box.resize(solver_bodies);
     fast_covered.resize(solver_bodies);
   }
+  void mark(std::size_t solver_index, const Aabb& swept, bool covered) {
+    fast_mark[solver_index] = 1;
+    fast_box[solver_index] = swept;
+    fast_covered[solver_index] = covered ? 1 : 0;
+  }
   // The step's fast bodies: the first fast_count of `fast`, whose records are kept from step
   // to step (only the fields a step starts from are set anew, not the whole record).
   std::vector<FastBody> fast;

@@ -340,29 +340,9 @@ Aabb World::shape_aabb(ShapeId id) const {
   return compute_aabb(s.geometry, state_->bodies[s.body].pose());
 }
 
-namespace {
-
-void check_material_value(ShapeId id, Real value, const char* what) {
-  if (!std::isfinite(value) || value < 0) {
-    throw InvalidArgumentError(std::string(what) + " of " + to_string(id) +
-                               " must be finite and non-negative, got " + std::to_string(value));
-  }
-}
-
-void check_coefficient_value(ShapeId id, Real value, const char* what) {
-  if (!detail::valid_coefficient(value)) {
-    throw InvalidArgumentError(std::string(what) + " of " + to_string(id) +
-                               " must be non-negative and within max_setting_magnitude (1e9), "
-                               "got " +
-                               detail::exact_number(value));
-  }
-}
-
-}  // namespace
-
 void World::set_shape_density(ShapeId id, Real density) {
   const detail::RecordScope record(*this, detail::Call::set_shape_density, id, density);
-  check_material_value(id, density, "set_shape_density");
+  detail::check_density(density, "set_shape_density of " + to_string(id));
   WorldState& w = *state_;
   Shape& s = w.shape(id);
   detail::check_shape_mass(s.geometry, density, "set_shape_density of " + to_string(id));
@@ -391,14 +371,14 @@ void remix_contacts(WorldState& w, std::uint32_t shape_index) {
 
 void World::set_shape_friction(ShapeId id, Real friction) {
   const detail::RecordScope record(*this, detail::Call::set_shape_friction, id, friction);
-  check_coefficient_value(id, friction, "set_shape_friction");
+  detail::check_coefficient(friction, "set_shape_friction of " + to_string(id));
   state_->shape(id).friction = friction;
   remix_contacts(*state_, id.index);
 }
 
 void World::set_shape_restitution(ShapeId id, Real restitution) {
   const detail::RecordScope record(*this, detail::Call::set_shape_restitution, id, restitution);
-  check_coefficient_value(id, restitution, "set_shape_restitution");
+  detail::check_coefficient(restitution, "set_shape_restitution of " + to_string(id));
   state_->shape(id).restitution = restitution;
   remix_contacts(*state_, id.index);
 }

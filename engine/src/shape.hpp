@@ -74,6 +74,12 @@ void for_each_core_point(const ShapeGeometry& geometry, Visit&& visit) {
 // The narrowphase geometry a (checked) ShapeDef describes; polygons are hulled here.
 ShapeGeometry make_geometry(const ShapeDef& def);
 
+// What the ShapeDef checks and the setters refuse, as InvalidArgumentError naming `what`
+// ("ShapeDef.friction", "set_shape_friction of shape 3"): a density that is negative or not
+// finite; a friction or restitution outside [0, max_setting_magnitude] (shape_def.cpp).
+void check_density(Real density, const std::string& what);
+void check_coefficient(Real value, const std::string& what);
+
 // Throws InvalidArgumentError, naming `what`, when `density` gives the shape a positive mass or
 // rotational inertia below min_mass_property (the solver could not invert its body's).
 void check_shape_mass(const ShapeGeometry& geometry, Real density, const std::string& what);

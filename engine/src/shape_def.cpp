@@ -10,6 +10,7 @@
 #include "checks.hpp"
 #include "mink/error.hpp"
 #include "mink/geometry/transform.hpp"
+#include "shape.hpp"
 
 namespace mink {
 
@@ -103,16 +104,10 @@ std::string number(Real value) {
   return out.str();
 }
 
-void check_material(Real value, const char* name) {
-  require(
-      std::isfinite(value) && value >= 0,
-      std::string("ShapeDef.") + name + " must be finite and non-negative, got " + number(value));
-}
-
-void check_coefficient(Real value, const char* name) {
-  require(detail::valid_coefficient(value),
-          std::string("ShapeDef.") + name +
-              " must be non-negative and within max_setting_magnitude (1e9), got " + number(value));
+void check_materials(const ShapeDef& def) {
+  detail::check_density(def.density, "ShapeDef.density");
+  detail::check_coefficient(def.friction, "ShapeDef.friction");
+  detail::check_coefficient(def.restitution, "ShapeDef.restitution");
 }
 
 void check_points_finite(const std::vector<Vec2>& points) {
@@ -132,10 +127,19 @@ void check_point_count(const ShapeDef& def, std::size_t count) {
 
 }  // namespace
 
+void detail::check_density(Real density, const std::string& what) {
+  require(std::isfinite(density) && density >= 0,
+          what + " must be finite and non-negative, got " + number(density));
+}
+
+void detail::check_coefficient(Real value, const std::string& what) {
+  require(detail::valid_coefficient(value),
+          what + " must be non-negative and within max_setting_magnitude (1e9), got " +
+              detail::exact_number(value));
+}
+
 void check_shape_def(const ShapeDef& def) {
-  check_material(def.density, "density");
-  check_coefficient(def.friction, "friction");
-  check_coefficient(def.restitution, "restitution");
+  check_materials(def);
   require(std::isfinite(def.radius) && def.radius >= 0,
           "ShapeDef.radius must be finite and non-negative, got " + number(def.radius));
   require(
@@ -199,9 +203,7 @@ ConvexHull make_shape_hull(const ShapeDef& def) {
     throw InvalidArgumentError("make_shape_hull: a " + std::string(to_string(def.type)) +
                                " is not a polygon");
   }
-  check_material(def.density, "density");
-  check_coefficient(def.friction, "friction");
-  check_coefficient(def.restitution, "restitution");
+  check_materials(def);
   if (def.scale) {
     if (!std::isfinite(def.scale->fixed_point.x()) || !std::isfinite(def.scale->fixed_point.y())) {
       throw InvalidArgumentError("ShapeDef.scale.fixed_point must be finite");

@@ -329,14 +329,17 @@ void WorldState::finish_body(std::uint32_t solver_index) {
   write_back(solver_index);
   Body& b = bodies[solver_to_body[solver_index]];
   // A fast body's box over the step: its shapes' boxes where the step began and where it ended
-  // (as Box2D v3 takes it, the speculative margin included).
+  // (as Box2D v3 takes it, the speculative margin included). Their broadphase boxes cover it
+  // when each shape has one and none left it: every box is held where a step begins.
   const bool fast = def.enable_continuous && moved_fast(solver_index);
-  Aabb swept = fast && !b.shapes.empty() ? shapes[b.shapes.front()].aabb : Aabb{};
+  Aabb swept = fast ? shapes[b.shapes.front()].aabb : Aabb{};
+  bool has_proxies = true;
   for (const std::uint32_t s : b.shapes) {
     Shape& shape = shapes[s];
     if (fast) swept = swept.merged(shape.aabb);
     update_shape_aabb(shape, b);
     if (fast) swept = swept.merged(shape.aabb);
+    has_proxies = has_proxies && shape.proxy != null_proxy;
     if (shape.proxy != null_proxy && !broadphase.fat_aabb(shape.proxy).contains(shape.aabb)) {
       boxes_left[solver_index] = 1;
     }
@@ -350,7 +353,7 @@ void WorldState::finish_body(std::uint32_t solver_index) {
   } else {
     b.sleep_time += dt;
   }
-  if (fast) mark_fast(solver_index, swept);
+  if (fast) continuous.mark(solver_index, swept, has_proxies && boxes_left[solver_index] == 0);
 }
 
 void WorldState::finish_step() {

@@ -254,10 +254,8 @@ struct WorldState {
   void finish_step();
   // continuous.cpp (before finish_step: it needs the step's solver records)
   void solve_continuous();
-  // From finish_body: whether the step moved the body fast (continuous collision sweeps it),
-  // and the mark for one that did, with its shapes' box over the step.
+  // From finish_body: whether the step moved the body fast (continuous collision sweeps it).
   bool moved_fast(std::uint32_t solver_index) const;
-  void mark_fast(std::uint32_t solver_index, const Aabb& swept);
   Sweep solver_sweep(std::uint32_t solver_index) const;
   Sweep body_sweep(std::uint32_t body) const;
   void sweep_pair(detail::FastBody& fast, std::uint32_t other_shape,

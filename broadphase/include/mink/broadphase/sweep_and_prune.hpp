@@ -167,8 +167,7 @@ class SweepAndPrune final : public Broadphase {
   std::vector<std::vector<Cursor>> worker_cursors_;
   /// Per block of find_begun's searches: the pairs it found.
   std::vector<std::vector<ProxyPair>> begun_blocks_;
-  std::uint64_t cursor_stamp_ = 0;      ///< this update's: a cursor of another is stale
-  std::vector<Cursor> loaded_cursors_;  ///< a loaded snapshot's, until checked
+  std::uint64_t cursor_stamp_ = 0;  ///< this update's: a cursor of another is stale
   std::size_t dead_count_ = 0;
 
   // Layout, chosen at each rebuild.
