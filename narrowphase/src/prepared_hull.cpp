@@ -34,7 +34,16 @@ PreparedHull::PreparedHull(ConvexHull hull) : hull_(std::move(hull)) {
   }
   const Vec2 c = mink::centroid(scaled);
   centroid_ = v[0] + Vec2(std::ldexp(c.x(), scale), std::ldexp(c.y(), scale));
-  normals_.resize(n);
+  size_ = n;
+  padded_size_ = std::max<std::size_t>(kSupportBlock, n + n % 2);
+  // Vertices and normals, then 2 padded_size_ coordinates, n face offsets and n angles as
+  // pairs: padded_size_ is even, so they fill whole pairs.
+  block_.resize(3 * n + padded_size_);
+  std::copy(v.begin(), v.end(), block_.begin());
+  Vec2* normals = block_.data() + n;
+  Real* xs = reals();
+  Real* ys = xs + padded_size_;
+  Real* offsets = ys + padded_size_;
   std::vector<Real> angles(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 edge = v[i + 1 == n ? 0 : i + 1] - v[i];
@@ -42,19 +51,19 @@ PreparedHull::PreparedHull(ConvexHull hull) : hull_(std::move(hull)) {
     // overflow in the squared length.
     const int exponent = std::ilogb(std::max(std::abs(edge.x()), std::abs(edge.y())));
     const Vec2 unit_edge(std::ldexp(edge.x(), -exponent), std::ldexp(edge.y(), -exponent));
-    normals_[i] = Vec2(unit_edge.y(), -unit_edge.x()).normalized();
-    angles[i] = pseudo_angle(normals_[i]);
-    face_offsets_.push_back(normals_[i].dot(v[i]));
+    normals[i] = Vec2(unit_edge.y(), -unit_edge.x()).normalized();
+    angles[i] = pseudo_angle(normals[i]);
+    offsets[i] = normals[i].dot(v[i]);
     radius_ = std::max(radius_, std::hypot(v[i].x() - centroid_.x(), v[i].y() - centroid_.y()));
   }
-  for (std::size_t i = 0; i < std::max<std::size_t>(kSupportBlock, n + n % 2); ++i) {
-    xs_.push_back(v[i < n ? i : 0].x());
-    ys_.push_back(v[i < n ? i : 0].y());
+  for (std::size_t i = 0; i < padded_size_; ++i) {
+    xs[i] = v[i < n ? i : 0].x();
+    ys[i] = v[i < n ? i : 0].y();
   }
   first_normal_ =
       static_cast<std::size_t>(std::min_element(angles.begin(), angles.end()) - angles.begin());
-  sorted_angles_.reserve(n);
-  for (std::size_t k = 0; k < n; ++k) sorted_angles_.push_back(angles[(first_normal_ + k) % n]);
+  Real* sorted = offsets + n;
+  for (std::size_t k = 0; k < n; ++k) sorted[k] = angles[(first_normal_ + k) % n];
 }
 
 }  // namespace mink

@@ -23,44 +23,53 @@ class PreparedHull {
   /// @brief The hull itself, in local coordinates.
   const ConvexHull& hull() const noexcept { return hull_; }
   /// @brief The hull's vertices, counter-clockwise, local coordinates.
-  std::span<const Vec2> vertices() const noexcept { return hull_.vertices(); }
+  std::span<const Vec2> vertices() const noexcept { return {block_.data(), size_}; }
   /// @brief Number of vertices.
-  std::size_t size() const noexcept { return hull_.size(); }
+  std::size_t size() const noexcept { return size_; }
   /// @brief Area centroid, local coordinates.
   const Vec2& centroid() const noexcept { return centroid_; }
 
   /// Unit outward normal of edge i, the edge from vertex i to vertex i + 1 (cyclic).
-  std::span<const Vec2> normals() const noexcept { return normals_; }
+  std::span<const Vec2> normals() const noexcept { return {block_.data() + size_, size_}; }
   /// normals()[i] . vertices()[i]: where edge i's supporting line lies along its normal.
-  std::span<const Real> face_offsets() const noexcept { return face_offsets_; }
+  std::span<const Real> face_offsets() const noexcept {
+    return {reals() + 2 * padded_size_, size_};
+  }
   /// Largest distance from the centroid to a vertex: the hull's length scale for tolerances.
   Real radius() const noexcept { return radius_; }
 
   /// Pseudo-angles (see pseudo_angle) of the edge normals in increasing order: entry k is the
   /// normal of edge (k + first_normal()) mod size(). The CCW normals turn once around the
   /// circle, so one rotation of the ring makes them sorted; support_index_binary searches it.
-  std::span<const Real> sorted_normal_angles() const noexcept { return sorted_angles_; }
+  std::span<const Real> sorted_normal_angles() const noexcept {
+    return {reals() + 2 * padded_size_ + size_, size_};
+  }
   /// @brief Index of the edge whose normal has the smallest pseudo-angle.
   std::size_t first_normal() const noexcept { return first_normal_; }
 
   /// The vertices' x and y in separate arrays padded with copies of vertex 0 to an even length
   /// of at least kSupportBlock, so the linear support scan works on two vertices per
   /// instruction and on small hulls as one fixed block with no loop.
-  const Real* xs() const noexcept { return xs_.data(); }
+  const Real* xs() const noexcept { return reals(); }
   /// @brief The y coordinates, padded like xs().
-  const Real* ys() const noexcept { return ys_.data(); }
+  const Real* ys() const noexcept { return reals() + padded_size_; }
   /// @brief Length of xs() and ys(), padding included.
-  std::size_t padded_size() const noexcept { return xs_.size(); }
+  std::size_t padded_size() const noexcept { return padded_size_; }
 
  private:
-  ConvexHull hull_;
-  Vec2 centroid_{0, 0};
-  std::vector<Vec2> normals_;
-  std::vector<Real> face_offsets_;
-  std::vector<Real> sorted_angles_;
+  // The arrays above in one block: vertices, normals, then xs and ys (first, so that they
+  // stay 16-byte aligned for the support scan's loads), face offsets and sorted angles as
+  // pairs of Reals. One allocation whose neighbouring cache lines hold what a contact needs
+  // next, where six allocations scattered a shape's arrays over the heap.
+  const Real* reals() const noexcept { return block_[2 * size_].data(); }
+  Real* reals() noexcept { return block_[2 * size_].data(); }
+
+  ConvexHull hull_;  // the cold copy, for the queries that take a ConvexHull
+  std::vector<Vec2> block_;
+  std::size_t size_ = 0;
+  std::size_t padded_size_ = 0;
   std::size_t first_normal_ = 0;
-  std::vector<Real> xs_;
-  std::vector<Real> ys_;
+  Vec2 centroid_{0, 0};
   Real radius_ = 0;
 };
 
