@@ -39,6 +39,7 @@ void match_box2d_v3(WorldDef& world) {
   world.max_linear_speed = 400;
   world.enable_continuous = true;
   world.continuous_fast_pairs = false;
+  world.fast_body_margin = false;
 }
 
 void our_solver_defaults(WorldDef& world) {
@@ -55,6 +56,7 @@ void our_solver_defaults(WorldDef& world) {
   world.max_linear_speed = ours.max_linear_speed;
   world.enable_continuous = ours.enable_continuous;
   world.continuous_fast_pairs = ours.continuous_fast_pairs;
+  world.fast_body_margin = ours.fast_body_margin;
 }
 
 // A scene's world run with its schedule (rain's ragdolls, junkyard's pusher), as `mink run`

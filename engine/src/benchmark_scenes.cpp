@@ -66,6 +66,7 @@ SceneDef box2d_v3_scene(bool sleep) {
   world.max_linear_speed = 400;
   world.enable_sleep = sleep;
   world.continuous_fast_pairs = false;
+  world.fast_body_margin = false;
   return scene;
 }
 

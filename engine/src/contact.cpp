@@ -298,7 +298,9 @@ bool WorldState::update_manifold(Contact& c) const {
                          std::abs(body_b.angular_velocity) * body_b.extent;
     const Real speculative = touching_distance + dt * closing;
     // The boxes hold the shapes and the base margin: apart by more than the closing, no points.
-    if (!shape_a.aabb.fattened(dt * closing).overlaps(shape_b.aabb)) {
+    // A fast body's boxes are bare (finish_body): the margin they lack is added here.
+    const Real bare = touching_distance * ((shape_a.bare_box ? 1 : 0) + (shape_b.bare_box ? 1 : 0));
+    if (!shape_a.aabb.fattened(dt * closing + bare).overlaps(shape_b.aabb)) {
       c.manifold.point_count = 0;
     } else {
       if (c.sharp_polygons) {

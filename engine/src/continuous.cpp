@@ -316,7 +316,13 @@ bool WorldState::moved_fast(std::uint32_t si) const {
   const Body& b = bodies[solver_to_body[si]];
   if (b.type != BodyType::dynamic || b.shapes.empty()) return false;
   const detail::SolverBody& sb = solver_bodies[si];
-  const Real moved = std::sqrt(sb.dpx * sb.dpx + sb.dpy * sb.dpy) + std::abs(sb.turn) * b.extent;
+  Real moved = std::sqrt(sb.dpx * sb.dpx + sb.dpy * sb.dpy) + std::abs(sb.turn) * b.extent;
+  if (!def.fast_body_margin) {
+    // Box2D v3 counts a body fast also when its velocity would carry it far in a step (a body
+    // just struck has barely moved yet): which bodies' boxes are bare follows it.
+    moved = std::max(moved,
+                     dt * (std::sqrt(sb.vx * sb.vx + sb.vy * sb.vy) + std::abs(sb.w) * b.extent));
+  }
   return b.bullet || moved > b.continuous_threshold * b.min_extent;
 }
 

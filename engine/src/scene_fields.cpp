@@ -552,6 +552,9 @@ constexpr SceneField<WorldDef> kWorldFields[] = {
     field<&WorldDef::continuous_fast_pairs>(
         "continuous_fast_pairs", FieldKind::boolean,
         "sweep fast bodies against each other too, not only bullets (false: as Box2D v3)"),
+    field<&WorldDef::fast_body_margin>(
+        "fast_body_margin", FieldKind::boolean,
+        "keep the speculative margin on fast bodies' broadphase boxes (false: as Box2D v3)"),
     field<&WorldDef::contact_push_max_velocity>(
         "contact_push_max_velocity", FieldKind::real,
         "fastest speed (m/s) at which overlap is pushed apart", kNonNegative),

@@ -93,8 +93,8 @@ Real broadphase_size(const ShapeGeometry& geometry) {
 }  // namespace detail
 
 // The box the broadphase sees: the shape at the current pose grown by the speculative
-// distance.
-void WorldState::update_shape_aabb(Shape& s, const Body& b) {
+// distance, or by nothing (with_margin false).
+Aabb WorldState::shape_box(const Shape& s, const Body& b, bool with_margin) const {
   const Pose pose = b.pose();
   const Real c = pose.rotation.cos, sn = pose.rotation.sin;
   Real lx = 0, ly = 0, ux = 0, uy = 0;
@@ -111,9 +111,28 @@ void WorldState::update_shape_aabb(Shape& s, const Body& b) {
       ly = std::min(ly, y), uy = std::max(uy, y);
     }
   });
-  const Real speculative = detail::shape_radius(s.geometry) + 4 * def.linear_slop;
-  s.aabb.lower = Vec2(pose.position.x() + lx - speculative, pose.position.y() + ly - speculative);
-  s.aabb.upper = Vec2(pose.position.x() + ux + speculative, pose.position.y() + uy + speculative);
+  const Real grown = detail::shape_radius(s.geometry) + (with_margin ? 4 * def.linear_slop : 0);
+  Aabb box;
+  box.lower = Vec2(pose.position.x() + lx - grown, pose.position.y() + ly - grown);
+  box.upper = Vec2(pose.position.x() + ux + grown, pose.position.y() + uy + grown);
+  return box;
+}
+
+void WorldState::update_shape_aabb(Shape& s, const Body& b, bool with_margin) {
+  s.aabb = shape_box(s, b, with_margin);
+  s.bare_box = !with_margin;
+}
+
+// A box is bare exactly when it is its shape's bare box at its body's pose: every step and
+// call that sets one leaves it so. (With no margin at all the two boxes are one, and which it
+// is called changes nothing.)
+void WorldState::find_bare_boxes() {
+  for (std::uint32_t i = 0; i < shapes.size(); ++i) {
+    Shape& s = shapes[i];
+    if (!s.alive) continue;
+    const Aabb bare = shape_box(s, bodies[s.body], false);
+    s.bare_box = s.aabb.lower == bare.lower && s.aabb.upper == bare.upper;
+  }
 }
 
 void WorldState::create_proxy(std::uint32_t shape_index) {

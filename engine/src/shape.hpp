@@ -28,7 +28,10 @@ inline constexpr Fattening kBroadphaseFattening{0.05, 0.125, 0};
 struct Shape {
   ShapeGeometry geometry = Circle{};
   ShapeType type = ShapeType::polygon;
-  Aabb aabb;  // tight box at the current pose, grown by the speculative margin
+  // Tight box at the current pose, grown by the speculative margin; a fast body's shapes, after
+  // a step its sweep found clear, keep theirs bare (finish_body), and say so.
+  Aabb aabb;
+  bool bare_box = false;
   Real density = 1, friction = 0.6, restitution = 0;
   Filter filter;
   bool sensor = false;

@@ -19,7 +19,7 @@ namespace mink {
 namespace {
 
 constexpr std::array<char, 8> kMagic{'M', 'I', 'N', 'K', 'S', 'N', 'A', 'P'};
-constexpr std::uint32_t kFormatVersion = 3;
+constexpr std::uint32_t kFormatVersion = 4;
 // Magic, format version, build fingerprint, payload size, payload checksum.
 constexpr std::size_t kHeaderSize = 8 + 4 + 8 + 8 + 8;
 
@@ -58,6 +58,7 @@ void state_fields(Archive& a, WorldState& w) {
   a(d.direct_joint_chains);
   a(d.enable_continuous);
   a(d.continuous_fast_pairs);
+  a(d.fast_body_margin);
   a(d.contact_push_max_velocity);
   a(d.restitution_threshold);
   a(d.hit_event_threshold);
@@ -165,6 +166,7 @@ std::unique_ptr<WorldState> parse(std::span<const std::uint8_t> bytes, const Wor
   }
   for (std::uint32_t i = 0; i < state->joints.size(); ++i) state->set_joint_bodies(i);
   state->rebuild_contact_slots();
+  state->find_bare_boxes();
   state->contact_index.reserve(state->contacts.size());
   for (std::uint32_t i = 0; i < state->contacts.size(); ++i) {
     const detail::Contact& c = state->contacts[i];

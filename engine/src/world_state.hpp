@@ -177,7 +177,11 @@ struct WorldState {
   void compact_awake_list();
   void update_mass(detail::Body& body);
   // shape.cpp
-  void update_shape_aabb(detail::Shape& shape, const detail::Body& body);
+  // A fast body's shapes leave a step with their bare box (with_margin false; see finish_body).
+  void update_shape_aabb(detail::Shape& shape, const detail::Body& body, bool with_margin = true);
+  Aabb shape_box(const detail::Shape& shape, const detail::Body& body, bool with_margin) const;
+  // A snapshot holds the boxes, not which are bare: found again from them.
+  void find_bare_boxes();
   void create_proxy(std::uint32_t shape_index);
   void destroy_proxy(detail::Shape& shape);
   // Re-makes the shape's broadphase proxy, so every pair it is in is tested again next step

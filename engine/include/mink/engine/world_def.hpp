@@ -54,6 +54,12 @@ struct WorldDef {
   /// Sweep fast bodies against each other too, not only bullets (Box2D v3 and Rapier sweep
   /// non-bullets against static and kinematic shapes only: false matches them).
   bool continuous_fast_pairs = true;
+  /// Keep the speculative margin on a fast body's broadphase boxes, so it meets other bodies'
+  /// speculative contacts as a slow body does. false: as Box2D v3, a body also counts as fast
+  /// when its velocity at the step's end would carry it past its continuous_threshold, and
+  /// after a sweep that stops it nowhere its boxes are bare: fewer pairs (Box2D v3's contact
+  /// counts), later contacts between fast bodies and others.
+  bool fast_body_margin = true;
   /// Fastest speed at which overlap is pushed apart, so deep overlap resolves without popping.
   Real contact_push_max_velocity = 3;
   /// Approach speeds below this do not bounce, whatever the restitution.
