@@ -3,7 +3,8 @@
 //   mink_matched   Box2D v3's app's world: 1/60 s steps of 4 substeps, 30 Hz contacts of
 //                  damping ratio 10, 3 m/s push-out, joints at 60 Hz and damping ratio 2,
 //                  restitution and hit thresholds 1 m/s, 400 m/s top speed, fast bodies
-//                  swept against static and kinematic shapes only
+//                  swept against static and kinematic shapes only, their boxes bare after
+//                  a sweep that stops them nowhere (WorldDef::fast_body_margin)
 //   mink_matched_no_ccd  the same with continuous collision off (WorldDef::enable_continuous),
 //                  to show what continuous collision costs
 //   mink_defaults  our own solver defaults (WorldDef{}: 5 substeps, 60 Hz contacts, fast

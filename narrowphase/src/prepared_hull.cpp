@@ -44,7 +44,8 @@ PreparedHull::PreparedHull(ConvexHull hull) : hull_(std::move(hull)) {
   Real* xs = reals();
   Real* ys = xs + padded_size_;
   Real* offsets = ys + padded_size_;
-  std::vector<Real> angles(n);
+  // The normals' angles in edge order, turned below so the smallest comes first.
+  Real* sorted = offsets + n;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 edge = v[i + 1 == n ? 0 : i + 1] - v[i];
     // Scale by a power of two before normalizing so tiny or huge edges neither underflow nor
@@ -52,7 +53,7 @@ PreparedHull::PreparedHull(ConvexHull hull) : hull_(std::move(hull)) {
     const int exponent = std::ilogb(std::max(std::abs(edge.x()), std::abs(edge.y())));
     const Vec2 unit_edge(std::ldexp(edge.x(), -exponent), std::ldexp(edge.y(), -exponent));
     normals[i] = Vec2(unit_edge.y(), -unit_edge.x()).normalized();
-    angles[i] = pseudo_angle(normals[i]);
+    sorted[i] = pseudo_angle(normals[i]);
     offsets[i] = normals[i].dot(v[i]);
     radius_ = std::max(radius_, std::hypot(v[i].x() - centroid_.x(), v[i].y() - centroid_.y()));
   }
@@ -60,10 +61,8 @@ PreparedHull::PreparedHull(ConvexHull hull) : hull_(std::move(hull)) {
     xs[i] = v[i < n ? i : 0].x();
     ys[i] = v[i < n ? i : 0].y();
   }
-  first_normal_ =
-      static_cast<std::size_t>(std::min_element(angles.begin(), angles.end()) - angles.begin());
-  Real* sorted = offsets + n;
-  for (std::size_t k = 0; k < n; ++k) sorted[k] = angles[(first_normal_ + k) % n];
+  first_normal_ = static_cast<std::size_t>(std::min_element(sorted, sorted + n) - sorted);
+  std::rotate(sorted, sorted + first_normal_, sorted + n);
 }
 
 }  // namespace mink
