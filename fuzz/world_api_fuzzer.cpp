@@ -15,6 +15,11 @@
 // The whole sequence runs at 1 worker and at 2; the digests after every step must be bitwise
 // equal (determinism at any worker count).
 //
+// The world's settings are one of eight variants picked by the input's length, not by its
+// bytes, so every input keeps its call sequence under each: Box2D v3's fast-body handling
+// (fast_body_margin and continuous_fast_pairs off), no sleeping with the scalar solver, and no
+// manifold reuse with joint chains solved iteratively, each on or off.
+//
 // A snapshot operation takes a snapshot and makes a second world from it at the other worker
 // count: its state hash and its own snapshot equal the first's. The first world then steps, is
 // rolled back in place (digest and state hash as before the step), and both worlds step once
@@ -112,7 +117,7 @@ struct JointRecord {
 class CallSequence {
  public:
   CallSequence(const std::uint8_t* data, std::size_t size, int workers)
-      : input_(data, size), world_(make_world_def(workers)), other_(mink::WorldDef{}) {
+      : input_(data, size), world_(make_world_def(workers, size)), other_(mink::WorldDef{}) {
     // Ids of another world are never valid here.
     foreign_body_ = other_.create_body({});
     foreign_shape_ = other_.create_shape(foreign_body_, mink::ShapeDef::circle(1));
@@ -135,9 +140,21 @@ class CallSequence {
   }
 
  private:
-  static mink::WorldDef make_world_def(int workers) {
+  static mink::WorldDef make_world_def(int workers, std::size_t size) {
     mink::WorldDef def;
     def.worker_count = workers;
+    if (size & 1) {
+      def.fast_body_margin = false;
+      def.continuous_fast_pairs = false;
+    }
+    if (size & 2) {
+      def.enable_sleep = false;
+      def.simd_solver = false;
+    }
+    if (size & 4) {
+      def.reuse_manifolds = false;
+      def.direct_joint_chains = false;
+    }
     return def;
   }
 
