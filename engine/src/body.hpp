@@ -11,8 +11,9 @@
 
 namespace mink::detail {
 
-// A body record. What every step reads sits in the first two cache lines (pose, velocities,
-// inverse masses, flags); the rest is touched by the API and the sleep pass only.
+// A body record, laid out by who reads it: each step's body passes (solver set-up, write-back,
+// box update) find what they read in the first four cache lines, in the order they read it;
+// what only the API and the sleep pass touch comes last.
 struct alignas(64) Body {
   // Pose: centre of mass and rotation are the state; the origin follows from them.
   Vec2 center{0, 0};
@@ -32,28 +33,32 @@ struct alignas(64) Body {
   bool mass_override = false;  // set_mass_data's values stand until the shapes change
   Real min_extent = 0;         // thinnest shape's half-width: continuous collision's yardstick
   Real continuous_threshold = 0.5;
-  MassData override_mass;
+  Real sleep_time = 0;
 
+  // What the solver's set-up reads besides the pose and masses.
   Vec2 local_center{0, 0};
   Vec2 force{0, 0};
   Real torque = 0;
-  Real mass = 0, inertia = 0;
   Real linear_damping = 0, angular_damping = 0, gravity_scale = 1;
-  Real sleep_time = 0;
-  std::uint64_t user_data = 0;
-  std::vector<std::uint32_t> shapes;
-  std::uint32_t generation = 0;
+
   // The pose before the step numbered moved_step (for interpolated_pose).
   Vec2 previous_origin{0, 0};
   Rotation previous_rotation{};
   std::uint64_t moved_step = ~std::uint64_t{0};
+  std::vector<std::uint32_t> shapes;
+
   // Contacts this body is in (indices into WorldState::contacts), so a step reaches the
   // contacts of awake bodies without scanning the sleeping ones.
   std::vector<std::uint32_t> contacts;
   // Of those, the contacts with a static or kinematic body: what continuous collision sweeps
   // a fast body against (none: nothing to sweep it against that its contacts hold).
   std::uint32_t fixed_contacts = 0;
+  std::uint32_t generation = 0;
   std::vector<std::uint32_t> joints;  // joints this body is in (slots), a gear in all four
+  std::uint64_t user_data = 0;
+
+  Real mass = 0, inertia = 0;
+  MassData override_mass;
   bool in_awake_list = false;
 
   Pose pose() const { return {origin, rotation}; }

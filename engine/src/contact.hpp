@@ -24,17 +24,19 @@ struct ManifoldCache {
 struct Contact {
   Manifold manifold;
   std::uint32_t body_a = 0, body_b = 0;
+  // What storing the solver's impulses touches, side by side: the impulses, then whether a hit
+  // event may follow.
   Real normal_impulse[2] = {0, 0};
   Real tangent_impulse[2] = {0, 0};
+  // Fastest normal approach over the points before the solve, and where (hit events only).
+  Real approach_speed = 0;
+  bool hit_events = false;  // either shape asks for hit events
+  bool touching = false;
+  bool events = true;           // begin/end events (both shapes allow them)
+  bool sharp_polygons = false;  // both are polygons without rounding: the direct hull path
   Real friction = 0, restitution = 0;
   std::uint32_t shape_a = 0, shape_b = 0;
   ProxyId proxy_a = null_proxy, proxy_b = null_proxy;
-  bool touching = false;
-  bool events = true;           // begin/end events (both shapes allow them)
-  bool hit_events = false;      // either shape asks for hit events
-  bool sharp_polygons = false;  // both are polygons without rounding: the direct hull path
-  // Fastest normal approach over the points before the solve, and where (hit events only).
-  Real approach_speed = 0;
   Vec2 approach_point{0, 0};
   // The constraint graph colour while the contact has points.
   std::uint8_t color = 255;

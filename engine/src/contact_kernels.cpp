@@ -168,6 +168,22 @@ void solve_one(SolverBody* bodies, ContactConstraint& c, SolverReal inv_h, Solve
   store_velocity(b, c.inv_mass_b, c.inv_inertia_b, vbx, vby, wb);
 }
 
+void finish_points(ContactConstraint& c) {
+  const SolverReal nx = c.nx, ny = c.ny, tx = ny, ty = -nx;
+  const SolverReal ma = c.inv_mass_a, ia = c.inv_inertia_a, mb = c.inv_mass_b, ib = c.inv_inertia_b;
+  for (int j = 0; j < c.point_count; ++j) {
+    ContactConstraintPoint& p = c.points[j];
+    const SolverReal ax = p.ax, ay = p.ay, bx = p.bx, by = p.by;
+    p.base_separation -= (bx - ax) * nx + (by - ay) * ny;
+    const SolverReal rna = ax * ny - ay * nx, rnb = bx * ny - by * nx;
+    const SolverReal kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
+    p.normal_mass = kn > 0 ? 1 / kn : 0;
+    const SolverReal rta = ax * ty - ay * tx, rtb = bx * ty - by * tx;
+    const SolverReal kt = ma + mb + ia * rta * rta + ib * rtb * rtb;
+    p.tangent_mass = kt > 0 ? 1 / kt : 0;
+  }
+}
+
 void restitution_one(SolverBody* bodies, ContactConstraint& c, SolverReal threshold) {
   if (c.restitution == 0) return;
   SolverBody& a = bodies[c.body_a];

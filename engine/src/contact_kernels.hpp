@@ -27,6 +27,13 @@ struct WideMaxImpulse {
   Wide point[2];
 };
 
+// Each point's normal and tangent masses, and its base separation from the separation its
+// field holds until then: the separation less the anchors' offset along the normal.
+void finish_points(ContactConstraint& c);
+// The same for the lanes of a SIMD batch (same bits); a lane whose bit in `two_points` is
+// clear keeps its second point zero, as a one-point constraint's is.
+void finish_points_wide(WideConstraint& w, std::uint32_t two_points);
+
 // One constraint at a time (the overflow, and the whole solve in scalar mode).
 void integrate_velocities(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
                           const SolverSettings& settings);

@@ -81,6 +81,34 @@ __attribute__((always_inline)) inline void solve_wide_impl(
 
 }  // namespace
 
+MINK_WIDE_KERNEL void finish_points_wide(WideConstraint& w, std::uint32_t two_points) {
+  const Wide zero = splat(0), one = splat(1);
+  const Wide nx = w.nx, ny = w.ny, tx = ny, ty = -nx;
+  const Wide ma = w.inv_mass_a, ia = w.inv_inertia_a, mb = w.inv_mass_b, ib = w.inv_inertia_b;
+  Wide second;
+  for (int lane = 0; lane < kWideLanes; ++lane) second[lane] = (two_points >> lane) & 1;
+  const auto has_second = second > zero;
+  for (int j = 0; j < 2; ++j) {
+    WideConstraint::Point& p = w.points[j];
+    const Wide ax = p.ax, ay = p.ay, bx = ax + w.dx, by = ay + w.dy;
+    Wide base_separation = p.base_separation - ((bx - ax) * nx + (by - ay) * ny);
+    const Wide rna = ax * ny - ay * nx, rnb = bx * ny - by * nx;
+    const Wide kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
+    Wide normal_mass = kn > zero ? one / kn : zero;
+    const Wide rta = ax * ty - ay * tx, rtb = bx * ty - by * tx;
+    const Wide kt = ma + mb + ia * rta * rta + ib * rtb * rtb;
+    Wide tangent_mass = kt > zero ? one / kt : zero;
+    if (j == 1) {
+      base_separation = has_second ? base_separation : zero;
+      normal_mass = has_second ? normal_mass : zero;
+      tangent_mass = has_second ? tangent_mass : zero;
+    }
+    p.base_separation = base_separation;
+    p.normal_mass = normal_mass;
+    p.tangent_mass = tangent_mass;
+  }
+}
+
 MINK_WIDE_KERNEL void warm_start_wide(SolverBody* bodies, WideConstraint* begin,
                                       WideConstraint* end) {
   for (WideConstraint* c = begin; c != end; ++c) {

@@ -107,10 +107,35 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
   if (wide) {
     scalar_.resize(overflow_count_);
     wide_.resize(wide_begin_[kColorCount]);
+    batch_first_.resize(wide_.size());
+    for (std::size_t c = 0; c < kColorCount; ++c) {
+      for (std::uint32_t w = wide_begin_[c]; w < wide_begin_[c + 1]; ++w) {
+        batch_first_[w] = color_begin_[c] + kWideLanes * (w - wide_begin_[c]);
+      }
+    }
   } else {
     scalar_.resize(constraints.size());
     wide_.clear();
+    batch_first_.clear();
   }
+}
+
+std::span<const std::uint32_t> ContactSolver::batch(std::uint32_t batch) const noexcept {
+  const std::uint32_t first = batch_first_[batch];
+  // The colour's end bounds its last batch.
+  const std::uint32_t color = color_of_[order_[first]];
+  const std::uint32_t end = std::min<std::uint32_t>(first + kWideLanes, color_begin_[color + 1]);
+  return {order_.data() + first, end - first};
+}
+
+std::span<const std::uint32_t> ContactSolver::overflow() const noexcept {
+  if (!wide_mode_) return {};
+  const std::uint32_t first = color_begin_[kColorCount];
+  return {order_.data() + first, order_.size() - first};
+}
+
+void ContactSolver::finish_batch(std::uint32_t batch, std::uint32_t two_points) {
+  finish_points_wide(wide_[batch], two_points);
 }
 
 void ContactSolver::set(std::uint32_t index, const ContactConstraint& constraint,

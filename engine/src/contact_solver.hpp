@@ -131,6 +131,18 @@ class ContactSolver {
   // colour, each colour's lanes in turn. Setting them in this order fills one SIMD batch
   // after another, so the batches being written stay in cache.
   std::span<const std::uint32_t> slot_order() const noexcept { return order_; }
+  // Wide mode: the SIMD batches, for a caller that fills a batch at a time, and the overflow.
+  // A batch's constraints (indices as passed to begin; a colour's last batch may hold fewer
+  // than kWideLanes) are set() with their points' masses and base separations left out, then
+  // finish_batch() works those out for all its lanes at once (finish_points twice over: the
+  // same bits). The overflow's constraints are set() whole.
+  std::uint32_t batch_count() const noexcept {
+    return static_cast<std::uint32_t>(batch_first_.size());
+  }
+  std::span<const std::uint32_t> batch(std::uint32_t batch) const noexcept;
+  std::span<const std::uint32_t> overflow() const noexcept;
+  // `two_points`: bit `lane` set for each lane whose constraint has two points.
+  void finish_batch(std::uint32_t batch, std::uint32_t two_points);
   void finish();
   // `joints`, when given, runs its part of each stage before the contacts.
   // The stages run on the task runner's workers, each colour split into blocks; the result
@@ -156,7 +168,8 @@ class ContactSolver {
   std::vector<ContactConstraint> scalar_;
   std::vector<std::uint32_t> color_begin_;  // colour positions, one past the last at the end
   std::vector<WideConstraint> wide_;
-  std::vector<std::uint32_t> wide_begin_;  // into wide_, per colour
+  std::vector<std::uint32_t> wide_begin_;   // into wide_, per colour
+  std::vector<std::uint32_t> batch_first_;  // per wide constraint, its first lane's position
   std::vector<std::uint8_t> color_of_;
   std::vector<WideMaxImpulse> max_impulse_;
   // Wide mode with restitution: the bouncing constraints' slots, in colour order, with what

@@ -35,13 +35,48 @@ namespace {
 
 constexpr std::uint32_t kPrefetchAhead = 8;
 
-// The part of a contact the solver reads and writes: the manifold, bodies and impulses.
+// Asks for the cache line at `p`. An asm statement on x86 rather than __builtin_prefetch: GCC
+// 12's side-effect analysis (IPA modref) takes a function or lambda made only of prefetch
+// builtins for one without effects and drops its calls.
+[[gnu::always_inline]] inline void prefetch_line(const void* p) {
+#if defined(__x86_64__) || defined(__i386__)
+  asm volatile("prefetcht0 %0" : : "m"(*static_cast<const char*>(p)));
+#else
+  __builtin_prefetch(p);
+#endif
+}
+
+// Asks for the cache lines of the `size` bytes at `p` (which need not start a line).
+[[gnu::always_inline]] inline void prefetch_bytes(const void* p, std::size_t size) {
+  const char* bytes = static_cast<const char*>(p);
+  for (std::size_t offset = 0; offset < size; offset += 64) prefetch_line(bytes + offset);
+  prefetch_line(bytes + size - 1);
+}
+
+// What the solver's set-up reads of a contact: the manifold, bodies, impulses and materials.
 void prefetch_contact(const Contact& c) {
-  const char* bytes = reinterpret_cast<const char*>(&c);
-  static_assert(offsetof(Contact, friction) + sizeof(Real) * 2 <= 192);
-  __builtin_prefetch(bytes);
-  __builtin_prefetch(bytes + 64);
-  __builtin_prefetch(bytes + 128);
+  static_assert(offsetof(Contact, restitution) < 192);
+  prefetch_bytes(&c, offsetof(Contact, restitution) + sizeof(Real));
+}
+
+// What storing a contact's impulses reads and writes: its impulses and hit event flag, side by
+// side (contact.hpp).
+void prefetch_contact_impulses(const Contact& c) {
+  constexpr std::size_t first = offsetof(Contact, normal_impulse);
+  static_assert(offsetof(Contact, approach_speed) > first && offsetof(Contact, hit_events) > first);
+  prefetch_bytes(&c.normal_impulse, offsetof(Contact, hit_events) + 1 - first);
+}
+
+// The three cache lines of a body record the solver's set-up reads (body.hpp).
+void prefetch_solver_setup(const Body& b) {
+  static_assert(offsetof(Body, gravity_scale) + sizeof(Real) <= 192);
+  prefetch_bytes(&b, offsetof(Body, gravity_scale) + sizeof(Real));
+}
+
+// The four cache lines of a body record finishing its step reads and writes (body.hpp).
+void prefetch_finish(const Body& b) {
+  static_assert(offsetof(Body, shapes) + sizeof(b.shapes) <= 256);
+  prefetch_bytes(&b, offsetof(Body, shapes) + sizeof(b.shapes));
 }
 
 }  // namespace
@@ -67,6 +102,8 @@ void WorldState::prepare_contacts() {
   // Each body's records are its own, so bodies are loaded in parallel.
   tasks.parallel_for(awake, 256, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
     for (std::uint32_t k = begin; k < end; ++k) {
+      // Bodies are records of several cache lines apart: ask for those a few ahead early.
+      if (k + kPrefetchAhead < end) prefetch_solver_setup(bodies[awake_list[k + kPrefetchAhead]]);
       const std::uint32_t i = awake_list[k];
       Body& b = bodies[i];
       body_solver_index[i] = static_cast<std::int32_t>(k);
@@ -164,7 +201,10 @@ void WorldState::prepare_contacts() {
     if (index != still) return solver_info[static_cast<std::size_t>(index)];
     return detail::SolverBodyInfo{bodies[body].center.x(), bodies[body].center.y(), 0, 0};
   };
-  const auto build = [&](std::uint32_t r, std::uint32_t worker) {
+  // Constraint r into its slot; `whole` works its points' masses out here, one at a time,
+  // rather than for its whole SIMD batch after (ContactSolver::finish_batch). Whether it has
+  // two points.
+  const auto build = [&](std::uint32_t r, std::uint32_t worker, bool whole) {
     detail::ContactConstraint k;
     const Contact& c = contacts[constraint_contacts[r]];
     const detail::ConstraintBodies& cb = constraint_bodies[r];
@@ -186,15 +226,10 @@ void WorldState::prepare_contacts() {
     k.mass_scale = s.mass_scale;
     k.impulse_scale = s.impulse_scale;
     k.point_count = c.manifold.point_count;
-    const detail::SolverBody& sa = solver_bodies[static_cast<std::size_t>(k.body_a)];
-    const detail::SolverBody& sb = solver_bodies[static_cast<std::size_t>(k.body_b)];
     if (k.point_count < 2) k.points[1] = detail::ContactConstraintPoint{};
     // Past the anchors (world points less centres, in double so a world far from the origin
     // loses nothing), everything is small and in the solver's precision.
     using detail::SolverReal;
-    const SolverReal nx = k.nx, ny = k.ny, tx = ny, ty = -nx;
-    const SolverReal ma = k.inv_mass_a, ia = k.inv_inertia_a, mb = k.inv_mass_b,
-                     ib = k.inv_inertia_b;
     for (int j = 0; j < k.point_count; ++j) {
       const ManifoldPoint& mp = c.manifold.points[static_cast<std::size_t>(j)];
       detail::ContactConstraintPoint& p = k.points[j];
@@ -206,38 +241,67 @@ void WorldState::prepare_contacts() {
       p.ay = ay;
       p.bx = bx;
       p.by = by;
-      p.base_separation =
-          static_cast<SolverReal>(mp.separation) - ((bx - ax) * nx + (by - ay) * ny);
-      const SolverReal rna = ax * ny - ay * nx, rnb = bx * ny - by * nx;
-      const SolverReal kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
-      p.normal_mass = kn > 0 ? 1 / kn : 0;
-      const SolverReal rta = ax * ty - ay * tx, rtb = bx * ty - by * tx;
-      const SolverReal kt = ma + mb + ia * rta * rta + ib * rtb * rtb;
-      p.tangent_mass = kt > 0 ? 1 / kt : 0;
+      p.base_separation = static_cast<SolverReal>(mp.separation);  // finish_points' to finish
       p.normal_impulse = static_cast<SolverReal>(c.normal_impulse[j]);
       p.tangent_impulse = static_cast<SolverReal>(c.tangent_impulse[j]);
       p.max_normal_impulse = 0;
-      const SolverReal dvx = (sb.vx - sb.w * by) - (sa.vx - sa.w * ay);
-      const SolverReal dvy = (sb.vy + sb.w * bx) - (sa.vy + sa.w * ax);
-      p.relative_velocity = dvx * nx + dvy * ny;
+      p.relative_velocity = 0;
+      // The approach speed only restitution reads: the bodies' velocities are loaded for
+      // bouncing contacts alone.
+      if (k.restitution > 0) {
+        const detail::SolverBody& sa = solver_bodies[static_cast<std::size_t>(k.body_a)];
+        const detail::SolverBody& sb = solver_bodies[static_cast<std::size_t>(k.body_b)];
+        const SolverReal dvx = (sb.vx - sb.w * by) - (sa.vx - sa.w * ay);
+        const SolverReal dvy = (sb.vy + sb.w * bx) - (sa.vy + sa.w * ax);
+        p.relative_velocity = dvx * k.nx + dvy * k.ny;
+      }
     }
+    if (whole) detail::finish_points(k);
     contact_solver.set(r, k, worker);
+    return k.point_count == 2;
   };
   // Each constraint is built into its own slot, so they are built in parallel, in slot order
-  // (one SIMD batch filled after another).
+  // (one SIMD batch filled after another). Their contacts are scattered through memory: those
+  // a few slots ahead are asked for early.
   const std::span<const std::uint32_t> order = contact_solver.slot_order();
-  tasks.parallel_for(
-      static_cast<std::uint32_t>(order.size()), 256,
-      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
-        for (std::uint32_t k = begin; k < end; ++k) {
-          // Their contacts are scattered through memory: ask for those a few
-          // ahead early.
-          if (k + kPrefetchAhead < end) {
-            prefetch_contact(contacts[constraint_contacts[order[k + kPrefetchAhead]]]);
-          }
-          build(order[k], worker);
-        }
-      });
+  const auto prefetch_ahead = [&](std::size_t position, std::size_t end) {
+    if (position + kPrefetchAhead >= end) return;
+    const std::uint32_t ahead = order[position + kPrefetchAhead];
+    prefetch_contact(contacts[constraint_contacts[ahead]]);
+    const detail::ConstraintBodies& cb = constraint_bodies[ahead];
+    prefetch_line(solver_info.data() + cb.a);
+    prefetch_line(solver_info.data() + cb.b);
+  };
+  const auto position_of = [&](std::span<const std::uint32_t> constraints) {
+    return static_cast<std::size_t>(constraints.data() - order.data());
+  };
+  if (def.simd_solver) {
+    // A batch at a time, its points' masses for all its lanes at once.
+    tasks.parallel_for(contact_solver.batch_count(), 32,
+                       [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
+                         const std::span<const std::uint32_t> last = contact_solver.batch(end - 1);
+                         const std::size_t stop = position_of(last) + last.size();
+                         for (std::uint32_t w = begin; w < end; ++w) {
+                           const std::span<const std::uint32_t> lanes = contact_solver.batch(w);
+                           const std::size_t first = position_of(lanes);
+                           std::uint32_t two_points = 0;
+                           for (std::uint32_t lane = 0; lane < lanes.size(); ++lane) {
+                             prefetch_ahead(first + lane, stop);
+                             if (build(lanes[lane], worker, false)) two_points |= 1u << lane;
+                           }
+                           contact_solver.finish_batch(w, two_points);
+                         }
+                       });
+  }
+  const std::span<const std::uint32_t> whole = def.simd_solver ? contact_solver.overflow() : order;
+  const std::size_t whole_first = def.simd_solver ? position_of(whole) : 0;
+  tasks.parallel_for(static_cast<std::uint32_t>(whole.size()), 256,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
+                       for (std::uint32_t k = begin; k < end; ++k) {
+                         prefetch_ahead(whole_first + k, whole_first + end);
+                         build(whole[k], worker, true);
+                       }
+                     });
   contact_solver.finish();
 
   counters.constraint_colors = contact_solver.color_count();
@@ -287,11 +351,18 @@ void WorldState::solve() {
   // parallel, which also marks the hits (the shapes met fast and the contact pushed: a
   // speculative point that never closed does not count); their events after, in constraint
   // order, from the marks rather than from every contact again.
+  // In slot order, the order of the solver's lanes in memory; the contacts, scattered, asked
+  // for a few ahead.
   hit_marks.assign(constraint_contacts.size(), 0);
+  const std::span<const std::uint32_t> order = contact_solver.slot_order();
   tasks.parallel_for(
-      static_cast<std::uint32_t>(constraint_contacts.size()), 256,
+      static_cast<std::uint32_t>(order.size()), 256,
       [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-        for (std::uint32_t r = begin; r < end; ++r) {
+        for (std::uint32_t k = begin; k < end; ++k) {
+          if (k + kPrefetchAhead < end) {
+            prefetch_contact_impulses(contacts[constraint_contacts[order[k + kPrefetchAhead]]]);
+          }
+          const std::uint32_t r = order[k];
           Contact& c = contacts[constraint_contacts[r]];
           contact_solver.impulses(r, c.normal_impulse, c.tangent_impulse);
           if (stopped_in_step(constraint_bodies[r].a) || stopped_in_step(constraint_bodies[r].b)) {
@@ -315,7 +386,12 @@ void WorldState::solve() {
   solver_turned.resize(step_joints.empty() ? 0 : solver_to_body.size());
   tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 128,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-                       for (std::uint32_t si = begin; si < end; ++si) finish_body(si);
+                       for (std::uint32_t si = begin; si < end; ++si) {
+                         if (si + kPrefetchAhead < end) {
+                           prefetch_finish(bodies[solver_to_body[si + kPrefetchAhead]]);
+                         }
+                         finish_body(si);
+                       }
                      });
 }
 
