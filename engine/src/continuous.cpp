@@ -64,6 +64,9 @@ namespace {
 
 // A fast body's box this many times wider than the middle one's is scanned apart.
 constexpr Real kWideFactor = 8;
+// What a body may close on a chain segment in a step, as a share of its thinnest half-width,
+// for the speculative contact alone to hold it (Box2D v3's core fraction).
+constexpr Real kCoreFraction = 0.25;
 
 // A shape's middle: the point a chain segment tells its front from its back by.
 Vec2 shape_middle(const ShapeGeometry& geometry) {
@@ -83,6 +86,28 @@ std::optional<Circle> middle_circle(const ShapeGeometry& geometry) {
   const Real thin = detail::shape_min_extent(geometry);
   if (!(thin > 0)) return std::nullopt;
   return Circle{shape_middle(geometry), 0.5 * thin};
+}
+
+// Whether a shape whose middle is `middle` (in the moving body's frame), carried from
+// `ends.start` to `ends.end`, only grazes the still chain segment `chain`: its middle starts
+// behind the segment (one-sided, it passes), or closes on the segment's line by less than
+// `core` and ends farther than `core` in front of it, however it turns on the way. The
+// speculative contact then holds it, and no time of impact is needed: a body sliding fast
+// along a chain costs none (Box2D v3's early out, with the turn's dip counted).
+bool grazes_chain(const Vec2& middle, const Sweep& sweep, const SweepEnds& ends,
+                  const ChainSegment& chain, const Pose& chain_pose, Real core) {
+  const Vec2 a = chain_pose.apply(chain.segment.point1);
+  const Vec2 e = chain_pose.apply(chain.segment.point2) - a;
+  const Real length = e.norm();
+  if (!(length > 0)) return false;
+  // Along the right perpendicular, the side the segment faces.
+  const auto in_front = [&](const Pose& pose) {
+    const Vec2 p = pose.apply(middle) - a;
+    return (p.x() * e.y() - p.y() * e.x()) / length;
+  };
+  const Real start = in_front(ends.start), end = in_front(ends.end);
+  const Real stray = ends.dip * (middle - sweep.local_center).norm();
+  return start < 0 || (start - end < core && end - stray > core);
 }
 
 // The fraction of the step at which `middle` (a point in the moving body's frame), starting in
@@ -270,6 +295,12 @@ void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
     if (!should_make_contact(s, other_shape)) continue;
     const Real tolerance = 0.25 * def.linear_slop;
     const Real target = slop_target(f.geometry, o.geometry, def.linear_slop);
+    const auto* chain = std::get_if<ChainSegment>(&o.geometry);
+    if (still && chain != nullptr &&
+        grazes_chain(shape_middle(f.geometry), fast_sweep, fast.local_ends, *chain, other_start,
+                     kCoreFraction * bodies[fast.body].min_extent)) {
+      continue;
+    }
     if (still && clear_of_a_face(f.geometry, fast_sweep, fast.local_ends, o.geometry, other_start,
                                  target + tolerance)) {
       continue;
@@ -279,7 +310,7 @@ void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
     const bool near = start.overlap || start.distance < 4 * def.linear_slop;
     ShapeGeometry middle;
     if (near) {
-      if (const auto* chain = std::get_if<ChainSegment>(&o.geometry)) {
+      if (chain != nullptr) {
         const Real crossing = middle_crossing(shape_middle(f.geometry), fast_sweep, fast.local_ends,
                                               *chain, other_sweep, other_start, still, tolerance);
         if (crossing > 0 && crossing < fast.fraction) fast.fraction = crossing;
