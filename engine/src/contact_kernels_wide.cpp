@@ -79,9 +79,8 @@ __attribute__((always_inline)) inline void solve_wide_impl(
   }
 }
 
-}  // namespace
-
-MINK_WIDE_KERNEL void finish_points_wide(WideConstraint& w, std::uint32_t two_points) {
+// Always inlined into the kernel below, as the solve's body is (vectors stay in registers).
+MINK_WIDE_INLINE void finish_points_impl(WideConstraint& w, std::uint32_t two_points) {
   const Wide zero = splat(0), one = splat(1);
   const Wide nx = w.nx, ny = w.ny, tx = ny, ty = -nx;
   const Wide ma = w.inv_mass_a, ia = w.inv_inertia_a, mb = w.inv_mass_b, ib = w.inv_inertia_b;
@@ -107,6 +106,12 @@ MINK_WIDE_KERNEL void finish_points_wide(WideConstraint& w, std::uint32_t two_po
     p.normal_mass = normal_mass;
     p.tangent_mass = tangent_mass;
   }
+}
+
+}  // namespace
+
+MINK_WIDE_KERNEL void finish_points_wide(WideConstraint& w, std::uint32_t two_points) {
+  finish_points_impl(w, two_points);
 }
 
 MINK_WIDE_KERNEL void warm_start_wide(SolverBody* bodies, WideConstraint* begin,

@@ -269,8 +269,9 @@ void WorldState::prepare_contacts() {
     const std::uint32_t ahead = order[position + kPrefetchAhead];
     prefetch_contact(contacts[constraint_contacts[ahead]]);
     const detail::ConstraintBodies& cb = constraint_bodies[ahead];
-    prefetch_line(solver_info.data() + cb.a);
-    prefetch_line(solver_info.data() + cb.b);
+    // The still body has no record there.
+    if (cb.a != still) prefetch_line(&solver_info[static_cast<std::size_t>(cb.a)]);
+    if (cb.b != still) prefetch_line(&solver_info[static_cast<std::size_t>(cb.b)]);
   };
   const auto position_of = [&](std::span<const std::uint32_t> constraints) {
     return static_cast<std::size_t>(constraints.data() - order.data());
