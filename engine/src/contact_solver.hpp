@@ -134,8 +134,8 @@ class ContactSolver {
   // Wide mode: the SIMD batches, for a caller that fills a batch at a time, and the overflow.
   // A batch's constraints (indices as passed to begin; a colour's last batch may hold fewer
   // than kWideLanes) are set() with their points' masses and base separations left out, then
-  // finish_batch() works those out for all its lanes at once (finish_points twice over: the
-  // same bits). The overflow's constraints are set() whole.
+  // finish_batch() works those out for all its lanes at once (bitwise what finish_points
+  // gives each). The overflow's constraints are set() whole.
   std::uint32_t batch_count() const noexcept {
     return static_cast<std::uint32_t>(batch_first_.size());
   }

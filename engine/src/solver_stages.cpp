@@ -294,13 +294,15 @@ void WorldState::prepare_contacts() {
                          }
                        });
   }
-  const std::span<const std::uint32_t> whole = def.simd_solver ? contact_solver.overflow() : order;
-  const std::size_t whole_first = def.simd_solver ? position_of(whole) : 0;
-  tasks.parallel_for(static_cast<std::uint32_t>(whole.size()), 256,
+  // The rest one at a time: the overflow, or every constraint for the scalar solver.
+  const std::span<const std::uint32_t> singles =
+      def.simd_solver ? contact_solver.overflow() : order;
+  const std::size_t singles_first = position_of(singles);
+  tasks.parallel_for(static_cast<std::uint32_t>(singles.size()), 256,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
                        for (std::uint32_t k = begin; k < end; ++k) {
-                         prefetch_ahead(whole_first + k, whole_first + end);
-                         build(whole[k], worker, true);
+                         prefetch_ahead(singles_first + k, singles_first + end);
+                         build(singles[k], worker, true);
                        }
                      });
   contact_solver.finish();
@@ -351,9 +353,9 @@ void WorldState::solve() {
   // Impulses back to the contacts and poses back to the bodies, each its own record, in
   // parallel, which also marks the hits (the shapes met fast and the contact pushed: a
   // speculative point that never closed does not count); their events after, in constraint
-  // order, from the marks rather than from every contact again.
-  // In slot order, the order of the solver's lanes in memory; the contacts, scattered, asked
-  // for a few ahead.
+  // order, from the marks rather than from every contact again. The impulses are read in slot
+  // order, the order of the solver's lanes in memory; the contacts, scattered, are asked for a
+  // few ahead.
   hit_marks.assign(constraint_contacts.size(), 0);
   const std::span<const std::uint32_t> order = contact_solver.slot_order();
   tasks.parallel_for(
