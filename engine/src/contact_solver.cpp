@@ -129,7 +129,6 @@ std::span<const std::uint32_t> ContactSolver::batch(std::uint32_t batch) const n
 }
 
 std::span<const std::uint32_t> ContactSolver::overflow() const noexcept {
-  if (!wide_mode_) return {};
   const std::uint32_t first = color_begin_[kColorCount];
   return {order_.data() + first, order_.size() - first};
 }

@@ -88,6 +88,24 @@ std::optional<Circle> middle_circle(const ShapeGeometry& geometry) {
   return Circle{shape_middle(geometry), 0.5 * thin};
 }
 
+// A chain segment where `pose` puts it: its first end, the way to its second, and its length.
+struct SegmentLine {
+  Vec2 a, e;
+  Real length;
+  SegmentLine(const ChainSegment& chain, const Pose& pose)
+      : a(pose.apply(chain.segment.point1)),
+        e(pose.apply(chain.segment.point2) - a),
+        length(e.norm()) {}
+  // How far `point` lies in front of the line, along its right perpendicular (the side the
+  // segment faces).
+  Real in_front(const Vec2& point) const {
+    const Vec2 p = point - a;
+    return (p.x() * e.y() - p.y() * e.x()) / length;
+  }
+  // How far along the segment `point` lies, in units of its length squared.
+  Real along(const Vec2& point) const { return (point - a).dot(e); }
+};
+
 // Whether a shape whose middle is `middle` (in the moving body's frame), carried from
 // `ends.start` to `ends.end`, only grazes the still chain segment `chain`: its middle starts
 // behind the segment (one-sided, it passes), or closes on the segment's line by less than
@@ -96,18 +114,11 @@ std::optional<Circle> middle_circle(const ShapeGeometry& geometry) {
 // along a chain costs none (Box2D v3's early out, with the turn's dip counted).
 bool grazes_chain(const Vec2& middle, const Sweep& sweep, const SweepEnds& ends,
                   const ChainSegment& chain, const Pose& chain_pose, Real core) {
-  const Vec2 a = chain_pose.apply(chain.segment.point1);
-  const Vec2 e = chain_pose.apply(chain.segment.point2) - a;
-  const Real length = e.norm();
-  if (!(length > 0)) return false;
-  // Along the right perpendicular, the side the segment faces.
-  const auto in_front = [&](const Pose& pose) {
-    const Vec2 p = pose.apply(middle) - a;
-    return (p.x() * e.y() - p.y() * e.x()) / length;
-  };
-  const Real start = in_front(ends.start), end = in_front(ends.end);
-  const Real stray = ends.dip * (middle - sweep.local_center).norm();
-  return start < 0 || (start - end < core && end - stray > core);
+  const SegmentLine line(chain, chain_pose);
+  if (!(line.length > 0)) return false;
+  const Real start = line.in_front(ends.start.apply(middle));
+  const Real end = line.in_front(ends.end.apply(middle));
+  return start < 0 || (start - end < core && end - ends.stray(middle, sweep.local_center) > core);
 }
 
 // The fraction of the step at which `middle` (a point in the moving body's frame), starting in
@@ -129,13 +140,10 @@ Real middle_crossing(const Vec2& middle, const Sweep& moving_sweep, const SweepE
   Real target = 0;
   const Pose& still_wall = chain_start;
   const auto place_at = [&](const Pose& moving, const Pose& wall) {
-    const Vec2 a = wall.apply(chain.segment.point1);
-    const Vec2 e = wall.apply(chain.segment.point2) - a;
-    const Vec2 p = moving.apply(middle) - a;
-    const Real along = p.dot(e);
-    // Along the right perpendicular, the side the segment faces.
-    const Real in_front = (p.x() * e.y() - p.y() * e.x()) / e.norm();
-    return Place{in_front - target, along, e.squaredNorm() - along};
+    const SegmentLine line(chain, wall);
+    const Vec2 point = moving.apply(middle);
+    const Real along = line.along(point);
+    return Place{line.in_front(point) - target, along, line.e.squaredNorm() - along};
   };
   const auto place = [&](Real t) {
     return place_at(moving_sweep.pose_at(t), chain_still ? still_wall : chain_sweep.pose_at(t));
@@ -149,7 +157,7 @@ Real middle_crossing(const Vec2& middle, const Sweep& moving_sweep, const SweepE
   // Beside a still chain the middle strays from the straight line between its ends by at
   // most its turn's dip (see clear_of_a_face): ends far enough in front keep it in front.
   if (chain_still) {
-    const Real stray = ends.dip * (middle - moving_sweep.local_center).norm();
+    const Real stray = ends.stray(middle, moving_sweep.local_center);
     if (std::min(start, place_at(ends.end, still_wall).closer + target) - stray > target) return 1;
   }
   // Each of the three is nearly linear in t (the middle's path bends only by the body's turn):
@@ -232,14 +240,13 @@ bool clear_of_a_face(const ShapeGeometry& moving, const Sweep& sweep, const Swee
                      const ShapeGeometry& still, const Pose& still_pose, Real clearance) {
   const Pose& start = ends.start;
   const Pose& end = ends.end;
-  const Real dip = ends.dip;
   const Real radius = detail::shape_radius(moving);
   bool clear = false;
   for_each_face(still, still_pose, [&](const Vec2& normal, Real offset) {
     if (clear) return;
     Real nearest = std::numeric_limits<Real>::infinity();
     detail::for_each_core_point(moving, [&](const Vec2& p) {
-      const Real stray = dip * (p - sweep.local_center).norm();
+      const Real stray = ends.stray(p, sweep.local_center);
       nearest =
           std::min(nearest, std::min(normal.dot(start.apply(p)), normal.dot(end.apply(p))) - stray);
     });

@@ -23,6 +23,11 @@ struct SweepEnds {
     const Real turn = std::abs(sweep.angle1 - sweep.angle0);
     dip = turn <= std::numbers::pi ? 1 - std::cos(0.5 * turn) : 2;
   }
+  // How far `point` (in the body's frame; `local_center` its centre of mass there) can stray
+  // over the step from the straight line between its places at the two ends.
+  Real stray(const Vec2& point, const Vec2& local_center) const {
+    return dip * (point - local_center).norm();
+  }
 };
 
 // A body that moved fast this step: its sweep over the step, the box around it, and the
