@@ -290,8 +290,8 @@ bool WorldState::update_manifold(Contact& c) const {
     }
   } else {
     const Manifold old = c.manifold;
-    const Real old_normal[2] = {c.normal_impulse[0], c.normal_impulse[1]};
-    const Real old_tangent[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
+    const detail::SolverReal old_normal[2] = {c.normal_impulse[0], c.normal_impulse[1]};
+    const detail::SolverReal old_tangent[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
     // Speculative distance: the base margin plus how far the pair may close this step.
     const Vec2 dv = body_b.velocity - body_a.velocity;
     const Real closing = dv.norm() + std::abs(body_a.angular_velocity) * body_a.extent +
@@ -357,7 +357,7 @@ void WorldState::mark_step_contacts(const Body& body, bool concurrent) {
   for (const std::uint32_t ci : body.contacts) detail::set_mark(step_contact_marks, ci, concurrent);
 }
 
-const std::vector<WorldState::StepContactKey>& WorldState::current_step_contact_keys() {
+const LargeVector<WorldState::StepContactKey>& WorldState::current_step_contact_keys() {
   if (!step_contact_keys_valid) {
     step_contact_keys.resize(step_contacts.size());
     for (std::size_t k = 0; k < step_contacts.size(); ++k) {

@@ -181,7 +181,8 @@ void ContactSolver::finish() {
   }
 }
 
-void ContactSolver::impulses(std::uint32_t index, Real normal[2], Real tangent[2]) const {
+void ContactSolver::impulses(std::uint32_t index, SolverReal normal[2],
+                             SolverReal tangent[2]) const {
   const std::uint32_t slot = slot_[index];
   if (slot & kScalar) {
     const ContactConstraint& c = scalar_[slot & ~kScalar];

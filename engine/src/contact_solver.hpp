@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "mink/geometry/large_page_allocator.hpp"
 #include "mink/geometry/types.hpp"
 #include "stage_runner.hpp"
 
@@ -97,7 +98,8 @@ struct WideMaxImpulse;
 struct ConstraintBodies {
   std::int32_t a = 0, b = 0;
   bool a_fixed = false, b_fixed = false;
-  std::uint8_t color = 0;  // from the constraint graph (kOverflowColor: one at a time)
+  std::uint8_t color = 0;   // from the constraint graph (kOverflowColor: one at a time)
+  bool hit_events = false;  // the contact's shapes ask for hit events
 };
 
 // The soft-step solver. begin() lays the constraints out by their colours from the constraint
@@ -150,7 +152,7 @@ class ContactSolver {
   void solve(std::span<SolverBody> bodies, std::span<const SolverBodyParams> params,
              const SolverSettings& settings, JointStages* joints, TaskRunner& tasks);
   // The accumulated impulses of constraint `index` after solve().
-  void impulses(std::uint32_t index, Real normal[2], Real tangent[2]) const;
+  void impulses(std::uint32_t index, SolverReal normal[2], SolverReal tangent[2]) const;
 
   std::size_t color_count() const noexcept;
   std::size_t overflow_count() const noexcept { return overflow_count_; }
@@ -167,7 +169,7 @@ class ContactSolver {
   std::vector<std::uint32_t> order_;  // constraint indices by slot
   std::vector<ContactConstraint> scalar_;
   std::vector<std::uint32_t> color_begin_;  // colour positions, one past the last at the end
-  std::vector<WideConstraint> wide_;
+  std::vector<WideConstraint, LargePageAllocator<WideConstraint>> wide_;
   std::vector<std::uint32_t> wide_begin_;   // into wide_, per colour
   std::vector<std::uint32_t> batch_first_;  // per wide constraint, its first lane's position
   std::vector<std::uint8_t> color_of_;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mink/engine/stale_id_error.hpp"
+#include "mink/geometry/large_page_allocator.hpp"
 
 namespace mink::detail {
 
@@ -62,8 +63,9 @@ class IdPool {
     return slots_[id.index];
   }
 
-  std::vector<Slot>& slots() noexcept { return slots_; }
-  const std::vector<Slot>& slots() const noexcept { return slots_; }
+  using Slots = std::vector<Slot, LargePageAllocator<Slot>>;
+  Slots& slots() noexcept { return slots_; }
+  const Slots& slots() const noexcept { return slots_; }
   Slot& operator[](std::uint32_t index) { return slots_[index]; }
   const Slot& operator[](std::uint32_t index) const { return slots_[index]; }
   std::size_t size() const noexcept { return slots_.size(); }
@@ -104,7 +106,7 @@ class IdPool {
   }
 
  private:
-  std::vector<Slot> slots_;
+  Slots slots_;
   std::vector<std::uint32_t> free_;
   std::size_t live_ = 0;
 };

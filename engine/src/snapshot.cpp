@@ -19,7 +19,7 @@ namespace mink {
 namespace {
 
 constexpr std::array<char, 8> kMagic{'M', 'I', 'N', 'K', 'S', 'N', 'A', 'P'};
-constexpr std::uint32_t kFormatVersion = 4;
+constexpr std::uint32_t kFormatVersion = 5;
 // Magic, format version, build fingerprint, payload size, payload checksum.
 constexpr std::size_t kHeaderSize = 8 + 4 + 8 + 8 + 8;
 

@@ -53,18 +53,17 @@ constexpr std::uint32_t kPrefetchAhead = 8;
   prefetch_line(bytes + size - 1);
 }
 
-// What the solver's set-up reads of a contact: the manifold, bodies, impulses and materials.
+// What the solver's set-up reads of a contact: its first two cache lines (contact.hpp).
 void prefetch_contact(const Contact& c) {
-  static_assert(offsetof(Contact, restitution) < 192);
-  prefetch_bytes(&c, offsetof(Contact, restitution) + sizeof(Real));
+  prefetch_line(&c);
+  prefetch_line(reinterpret_cast<const char*>(&c) + 64);
 }
 
-// What storing a contact's impulses reads and writes: its impulses and hit event flag, side by
-// side (contact.hpp).
+// What storing a contact's impulses writes: one cache line (contact.hpp).
 void prefetch_contact_impulses(const Contact& c) {
-  constexpr std::size_t first = offsetof(Contact, normal_impulse);
-  static_assert(offsetof(Contact, approach_speed) > first && offsetof(Contact, hit_events) > first);
-  prefetch_bytes(&c.normal_impulse, offsetof(Contact, hit_events) + 1 - first);
+  static_assert(offsetof(Contact, normal_impulse) / 64 ==
+                (offsetof(Contact, tangent_impulse) + sizeof(c.tangent_impulse) - 1) / 64);
+  prefetch_line(&c.normal_impulse);
 }
 
 // The three cache lines of a body record the solver's set-up reads (body.hpp).
@@ -164,15 +163,15 @@ void WorldState::prepare_contacts() {
     return index < 0 || solver_info[static_cast<std::size_t>(index)].inv_mass == 0;
   };
   // From the compact keys, in order, rather than the contact records.
-  const std::vector<StepContactKey>& keys = current_step_contact_keys();
+  const LargeVector<StepContactKey>& keys = current_step_contact_keys();
   for (std::size_t k = 0; k < step_contacts.size(); ++k) {
     const StepContactKey& key = keys[k];
     if (!key.acting) continue;
     const std::int32_t ia = body_solver_index[key.body_a], ib = body_solver_index[key.body_b];
     if (ia < 0 && ib < 0) continue;
     constraint_contacts.push_back(step_contacts[k]);
-    constraint_bodies.push_back(
-        {ia < 0 ? still : ia, ib < 0 ? still : ib, fixed(ia), fixed(ib), key.color});
+    constraint_bodies.push_back({ia < 0 ? still : ia, ib < 0 ? still : ib, fixed(ia), fixed(ib),
+                                 key.color, key.hit_events});
   }
   // Constraints in order of their first moving body (a stable counting sort): neighbouring
   // constraints then touch neighbouring bodies and the solver's gathers stay in cache.
@@ -242,8 +241,8 @@ void WorldState::prepare_contacts() {
       p.bx = bx;
       p.by = by;
       p.base_separation = static_cast<SolverReal>(mp.separation);  // finish_points' to finish
-      p.normal_impulse = static_cast<SolverReal>(c.normal_impulse[j]);
-      p.tangent_impulse = static_cast<SolverReal>(c.tangent_impulse[j]);
+      p.normal_impulse = c.normal_impulse[j];
+      p.tangent_impulse = c.tangent_impulse[j];
       p.max_normal_impulse = 0;
       p.relative_velocity = 0;
       // The approach speed only restitution reads: the bodies' velocities are loaded for
@@ -372,7 +371,10 @@ void WorldState::solve() {
             c.normal_impulse[0] = c.normal_impulse[1] = 0;
             c.tangent_impulse[0] = c.tangent_impulse[1] = 0;
           }
-          hit_marks[r] = c.hit_events && c.approach_speed > def.hit_event_threshold &&
+          // The hit flag from the constraint's record: the contact's line with the approach
+          // speed is read for hit-event contacts only.
+          hit_marks[r] = constraint_bodies[r].hit_events &&
+                         c.approach_speed > def.hit_event_threshold &&
                          std::max(c.normal_impulse[0], c.normal_impulse[1]) > 0;
         }
       });

@@ -45,7 +45,9 @@ inline void set_mark(std::vector<std::uint64_t>& marks, std::uint32_t index, boo
 }  // namespace detail
 
 // Everything a World owns. Each concept's data and operations live in their own file (body,
-// shape, contact, sensor, island, the solver stages); this is where they meet.
+// shape, contact, sensor, island, the solver stages); this is where they meet. The records and
+// per-step arrays that a step reads scattered are LargeVectors: once a world makes them 2 MiB
+// or more, they take 2 MiB pages (large_page_allocator.hpp).
 struct WorldState {
   WorldDef def;
   detail::TaskRunner tasks;  // the parallel phases of a step run here
@@ -60,12 +62,12 @@ struct WorldState {
   // update, so a proxy id is never reused within one pair-update cycle.
   std::vector<ProxyId> pending_proxy_destroys;
 
-  std::vector<detail::Contact> contacts;
+  LargeVector<detail::Contact> contacts;
   detail::ContactMap contact_index;
   // Where each contact is listed in its bodies' contact lists ([0]: body_a's, [1]: body_b's),
   // so removing it edits the lists in place rather than searching them (a static body holding
   // a ring of chain segments lists a thousand). Derived: rebuilt when a snapshot is loaded.
-  std::vector<std::array<std::uint32_t, 2>> contact_slots;
+  LargeVector<std::array<std::uint32_t, 2>> contact_slots;
   std::vector<detail::SensorState> sensors;  // sorted by sensor shape slot
   std::size_t touching_count = 0;            // contacts whose touching flag is set
   detail::ConstraintGraph graph;
@@ -73,8 +75,8 @@ struct WorldState {
 
   // Bodies that may be awake (every awake body is here; stale entries are dropped once a
   // step): a step visits these and their contacts only, so a sleeping island costs nothing.
-  std::vector<std::uint32_t> awake_list;
-  std::vector<std::uint32_t> step_contacts;  // contacts of moving bodies this step, in order
+  LargeVector<std::uint32_t> awake_list;
+  LargeVector<std::uint32_t> step_contacts;  // contacts of moving bodies this step, in order
   // One bit per contact: marked from the moving bodies' contact lists and read off in order
   // into step_contacts (no sort, and the contacts of sleeping bodies are never touched).
   std::vector<std::uint64_t> step_contact_marks;
@@ -87,17 +89,17 @@ struct WorldState {
     std::uint32_t body_a, body_b;
     std::uint8_t color;
     bool acting;  // has manifold points
-    bool a_fixed, b_fixed, touching;
+    bool a_fixed, b_fixed, touching, hit_events;
   };
   StepContactKey step_contact_key(const detail::Contact& c) const {
-    return {c.body_a,  c.body_b,  c.color,   c.manifold.point_count > 0,
-            c.a_fixed, c.b_fixed, c.touching};
+    return {c.body_a,  c.body_b,  c.color,    c.manifold.point_count > 0,
+            c.a_fixed, c.b_fixed, c.touching, c.hit_events};
   }
-  std::vector<StepContactKey> step_contact_keys;
+  LargeVector<StepContactKey> step_contact_keys;
   bool step_contact_keys_valid = false;
   // The keys of step_contacts as they are now: collide()'s, or read again from the contacts
   // when the list changed since.
-  const std::vector<StepContactKey>& current_step_contact_keys();
+  const LargeVector<StepContactKey>& current_step_contact_keys();
 
   std::vector<ContactBeginEvent> begin_events;
   std::vector<ContactEndEvent> end_events;
@@ -123,10 +125,10 @@ struct WorldState {
   int substeps = 1;
 
   // Step scratch, kept to avoid allocating every step.
-  std::vector<detail::SolverBody> solver_bodies;
-  std::vector<detail::SolverBodyParams> solver_params;
-  std::vector<std::uint32_t> solver_to_body;
-  std::vector<std::int32_t> body_solver_index;
+  LargeVector<detail::SolverBody> solver_bodies;
+  LargeVector<detail::SolverBodyParams> solver_params;
+  LargeVector<std::uint32_t> solver_to_body;
+  LargeVector<std::int32_t> body_solver_index;
   // Per solver body, this step: whether a shape's box left its broadphase box (found while the
   // body's records are at hand, so the broadphase's serial update visits only those).
   std::vector<std::uint8_t> boxes_left;
@@ -137,9 +139,9 @@ struct WorldState {
   // Per solver body, this step: 1 where the solve diverged on it, 2 where it is stopped with
   // one that did (stop_diverged); empty when every solve held.
   std::vector<std::uint8_t> stopped;
-  std::vector<detail::SolverBodyInfo> solver_info;
-  std::vector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
-  std::vector<detail::ConstraintBodies> constraint_bodies, sorted_bodies;
+  LargeVector<detail::SolverBodyInfo> solver_info;
+  LargeVector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
+  LargeVector<detail::ConstraintBodies> constraint_bodies, sorted_bodies;
   detail::ContactSolver contact_solver;
   std::int32_t still_body = 0;                   // the solver body standing in for the unmoving
   std::vector<std::uint32_t> step_joints;        // joints of moving bodies this step, solve order

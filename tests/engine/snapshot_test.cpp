@@ -393,12 +393,16 @@ TEST(Snapshot, AContactThatMisnamesItsProxiesOrBodiesIsRefused) {
   const std::uint64_t unchanged = world.state_hash();
   // The contact's record: its friction (the shapes' mixed), restitution, shape and proxy
   // indices, four flags, approach speed and point, colour, then its fixed flags.
-  const Real friction = detail::mix_friction(kGroundFriction, ShapeDef{}.friction);
-  std::uint8_t pattern[sizeof(Real)];
+  // Materials are kept in the solver's precision.
+  const auto friction =
+      static_cast<detail::SolverReal>(detail::mix_friction(kGroundFriction, ShapeDef{}.friction));
+  std::uint8_t pattern[sizeof friction];
   std::memcpy(pattern, &friction, sizeof friction);
-  const auto at = std::search(snapshot.begin() + 36, snapshot.end(), pattern, pattern + 8);
+  const auto at =
+      std::search(snapshot.begin() + 36, snapshot.end(), pattern, pattern + sizeof friction);
   ASSERT_NE(at, snapshot.end());
-  const auto proxies = static_cast<std::size_t>(at - snapshot.begin()) + 8 + 8 + 8;
+  const auto proxies =
+      static_cast<std::size_t>(at - snapshot.begin()) + 2 * sizeof friction + 4 + 4;
   const std::size_t a_fixed = proxies + 8 + 4 + 8 + 16 + 1;
   const auto restored = [&](std::size_t offset, std::uint8_t value) {
     std::vector<std::uint8_t> bytes = snapshot;

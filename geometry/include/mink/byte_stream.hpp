@@ -137,8 +137,8 @@ class ByteReader {
 /// straight to the bytes; anything else through an io(archive, record) overload found by
 /// argument-dependent lookup (declared next to the archives for library types, and in the
 /// record's own namespace, or mink::detail, for the engine's).
-template <typename Archive, typename T>
-void io(Archive& archive, std::vector<T>& items);
+template <typename Archive, typename T, typename Allocator>
+void io(Archive& archive, std::vector<T, Allocator>& items);
 template <typename Archive, typename T, std::size_t N>
 void io(Archive& archive, std::array<T, N>& items);
 template <typename Archive, typename... Ts>
@@ -189,8 +189,8 @@ void io(Archive& archive, Aabb& box) {
   archive(box.upper);
 }
 
-template <typename Archive, typename T>
-void io(Archive& archive, std::vector<T>& items) {
+template <typename Archive, typename T, typename Allocator>
+void io(Archive& archive, std::vector<T, Allocator>& items) {
   constexpr bool plain = std::is_arithmetic_v<T> && !std::is_same_v<T, bool>;
   if constexpr (Archive::loading) {
     items.resize(archive.count(plain ? sizeof(T) : 1));
