@@ -52,11 +52,13 @@ void WorldState::add_to_awake_list(Body& b) {
   if (b.in_awake_list) return;
   b.in_awake_list = true;
   awake_list.push_back(static_cast<std::uint32_t>(&b - bodies.slots().data()));
+  awake_list_compact = false;
 }
 
 // Drops the bodies that went to sleep, died or stopped moving, and restores slot order (the
 // order the solver and the events have always used).
 void WorldState::compact_awake_list() {
+  if (awake_list_compact) return;  // large worlds: a read of every awake body record saved
   std::size_t kept = 0;
   for (const std::uint32_t i : awake_list) {
     Body& b = bodies[i];
@@ -72,6 +74,7 @@ void WorldState::compact_awake_list() {
   }
   // A slot freed and reused within one step can be listed twice.
   awake_list.erase(std::unique(awake_list.begin(), awake_list.end()), awake_list.end());
+  awake_list_compact = true;
 }
 
 // Mass, centre of mass and inertia from the shapes (compute_mass), density-weighted, unless
@@ -169,6 +172,7 @@ void World::destroy_body(BodyId id) {
   while (!b.shapes.empty()) destroy_shape(state_->shape_id(b.shapes.back()));
   b.contacts.clear();
   state_->bodies.release(id.index);  // a stale awake-list entry is dropped next step
+  state_->awake_list_compact = false;
 }
 
 bool World::is_valid(BodyId id) const noexcept {
@@ -379,6 +383,7 @@ void World::set_awake(BodyId id, bool awake) {
     state_->wake(b);
   } else if (b.type == BodyType::dynamic && b.allow_sleep) {
     b.awake = false;
+    state_->awake_list_compact = false;
     b.sleep_time = state_->def.time_to_sleep;
     b.velocity = Vec2(0, 0);
     b.angular_velocity = 0;
@@ -392,6 +397,7 @@ void World::set_body_type(BodyId id, BodyType type) {
   if (b.type == type) return;
   for (std::uint32_t s : b.shapes) w.update_seams(s, true);
   b.type = type;
+  w.awake_list_compact = false;
   if (type == BodyType::static_body) {
     b.velocity = Vec2(0, 0);
     b.angular_velocity = 0;
@@ -419,6 +425,7 @@ void World::set_enabled(BodyId id, bool enabled) {
     for (std::uint32_t s : b.shapes) w.update_seams(s, true);
   }
   b.enabled = enabled;
+  w.awake_list_compact = false;
   for (std::uint32_t s : b.shapes) {
     w.destroy_shape_contacts(s);
     w.destroy_proxy(w.shapes[s]);

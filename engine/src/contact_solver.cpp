@@ -62,22 +62,45 @@ constexpr std::uint32_t kScalar = 1u << 31;
 }  // namespace
 
 void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::int32_t still,
-                          bool wide, std::uint32_t workers) {
+                          bool wide, TaskRunner& tasks) {
   wide_mode_ = wide;
   bouncy_ = false;
   still_ = still;
   restitution_.clear();
-  findings_.resize(workers);
+  findings_.resize(tasks.workers());
   for (WorkerFindings& f : findings_) {
     f.bouncy = false;
     f.restitution.clear();
   }
-  // Colours come from the constraint graph, which keeps them from step to step.
-  color_of_.resize(constraints.size());
+  // Colours come from the constraint graph, which keeps them from step to step. The
+  // constraints are laid out colour by colour, in their order within each: in one run per
+  // worker, each counting its constraints per colour, then putting them where the counts,
+  // summed colour by colour and run by run, say (the order a single run gives).
+  const auto count = static_cast<std::uint32_t>(constraints.size());
+  const std::uint32_t runs = tasks.workers();
+  const auto run_begin = [&](std::uint32_t run) {
+    return static_cast<std::uint32_t>(std::uint64_t{count} * run / runs);
+  };
+  color_of_.resize(count);
+  slot_.resize(count);
+  order_.resize(count);
+  static_assert(kColorCount + 1 <= kRunColorStride);
+  run_colors_.assign(runs * kRunColorStride, 0);
+  tasks.parallel_for(runs, 1, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+    for (std::uint32_t run = begin; run < end; ++run) {
+      // Counted locally: the arrays written in the loop could alias the shared ones.
+      std::array<std::uint32_t, kColorCount + 1> counts{};
+      for (std::uint32_t i = run_begin(run), last = run_begin(run + 1); i < last; ++i) {
+        color_of_[i] = constraints[i].color;
+        ++counts[constraints[i].color];
+      }
+      std::copy(counts.begin(), counts.end(), run_colors_.begin() + run * kRunColorStride);
+    }
+  });
   std::array<std::uint32_t, kColorCount + 1> counts{};
-  for (std::uint32_t i = 0; i < constraints.size(); ++i) {
-    color_of_[i] = constraints[i].color;
-    ++counts[constraints[i].color];
+  for (std::uint32_t run = 0; run < runs; ++run) {
+    for (std::size_t c = 0; c <= kColorCount; ++c)
+      counts[c] += run_colors_[run * kRunColorStride + c];
   }
   overflow_count_ = counts[kColorCount];
   color_begin_.assign(kColorCount + 2, 0);
@@ -86,24 +109,35 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
   for (std::size_t c = 0; c < kColorCount; ++c) {
     wide_begin_[c + 1] = wide_begin_[c] + (counts[c] + kWideLanes - 1) / kWideLanes;
   }
-  // Slots: position within the colour gives the batch and the lane directly.
-  slot_.resize(constraints.size());
-  std::array<std::uint32_t, kColorCount + 1> fill{};
-  for (std::size_t c = 0; c <= kColorCount; ++c) fill[c] = color_begin_[c];
-  order_.resize(constraints.size());
-  for (std::uint32_t i = 0; i < constraints.size(); ++i) {
-    const std::uint8_t color = color_of_[i];
-    const std::uint32_t position = fill[color]++;
-    order_[position] = i;
-    if (!wide) {
-      slot_[i] = kScalar | position;
-    } else if (color == kColorCount) {
-      slot_[i] = kScalar | (position - color_begin_[kColorCount]);
-    } else {
-      const std::uint32_t offset = position - color_begin_[color];
-      slot_[i] = kWideLanes * (wide_begin_[color] + offset / kWideLanes) + offset % kWideLanes;
+  for (std::size_t c = 0; c <= kColorCount; ++c) {
+    std::uint32_t position = color_begin_[c];
+    for (std::uint32_t run = 0; run < runs; ++run) {
+      std::uint32_t& at = run_colors_[run * kRunColorStride + c];
+      const std::uint32_t here = at;
+      at = position;
+      position += here;
     }
   }
+  // Slots: position within the colour gives the batch and the lane directly.
+  tasks.parallel_for(runs, 1, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+    for (std::uint32_t run = begin; run < end; ++run) {
+      std::array<std::uint32_t, kColorCount + 1> next;
+      std::copy_n(run_colors_.begin() + run * kRunColorStride, next.size(), next.begin());
+      for (std::uint32_t i = run_begin(run), last = run_begin(run + 1); i < last; ++i) {
+        const std::uint8_t color = color_of_[i];
+        const std::uint32_t position = next[color]++;
+        order_[position] = i;
+        if (!wide) {
+          slot_[i] = kScalar | position;
+        } else if (color == kColorCount) {
+          slot_[i] = kScalar | (position - color_begin_[kColorCount]);
+        } else {
+          const std::uint32_t offset = position - color_begin_[color];
+          slot_[i] = kWideLanes * (wide_begin_[color] + offset / kWideLanes) + offset % kWideLanes;
+        }
+      }
+    }
+  });
   if (wide) {
     scalar_.resize(overflow_count_);
     wide_.resize(wide_begin_[kColorCount]);

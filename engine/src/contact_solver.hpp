@@ -123,9 +123,9 @@ class ContactSolver {
   // false keeps every constraint scalar and solves them one at a time in the same colour
   // order: the slow twin the tests compare the SIMD path against (the results are bitwise
   // equal).
-  // `workers`: how many workers may call set() at once.
+  // Runs on `tasks`, whose workers may then call set() at once.
   void begin(std::span<const ConstraintBodies> constraints, std::int32_t still, bool wide,
-             std::uint32_t workers);
+             TaskRunner& tasks);
   // Constraint `index` (as passed to begin), once each, from any worker (each index writes
   // only its own slot), then finish().
   void set(std::uint32_t index, const ContactConstraint& constraint, std::uint32_t worker);
@@ -173,6 +173,10 @@ class ContactSolver {
   std::vector<std::uint32_t> wide_begin_;   // into wide_, per colour
   std::vector<std::uint32_t> batch_first_;  // per wide constraint, its first lane's position
   std::vector<std::uint8_t> color_of_;
+  // Per worker's run of constraints in begin(): its count, then its next position, per colour,
+  // each run's on cache lines of its own.
+  static constexpr std::size_t kRunColorStride = 64;
+  std::vector<std::uint32_t> run_colors_;
   std::vector<WideMaxImpulse> max_impulse_;
   // Wide mode with restitution: the bouncing constraints' slots, in colour order, with what
   // restitution reads that the lanes do not hold (the rest is read back from the lanes).

@@ -138,6 +138,7 @@ void WorldState::update_islands() {
       b.velocity = Vec2(0, 0);
       b.angular_velocity = 0;
       b.awake = false;
+      awake_list_compact = false;
       fell_asleep.push_back(i);
     }
   }

@@ -153,47 +153,72 @@ void WorldState::prepare_contacts() {
   const detail::Softness static_soft =
       detail::make_softness(2 * contact_hertz, def.contact_damping_ratio, h);
 
-  // Which contacts become constraints, and between which solver bodies: the solver colours
-  // them first, then each constraint is built straight into its slot.
-  constraint_contacts.clear();
-  constraint_bodies.clear();
+  // Which contacts become constraints, and between which solver bodies, in order of their
+  // first moving body and then of the contacts (a stable counting sort): neighbouring
+  // constraints then touch neighbouring bodies and the solver's gathers stay in cache. The
+  // solver colours them next, then each constraint is built straight into its slot.
   // A dynamic body is the only kind with mass, so the compact solver records tell which
   // bodies the solver moves; the still body is fixed as well (the colouring relies on it).
   const auto fixed = [&](std::int32_t index) {
     return index < 0 || solver_info[static_cast<std::size_t>(index)].inv_mass == 0;
   };
-  // From the compact keys, in order, rather than the contact records.
+  // From the compact keys, in order, rather than the contact records. Whether step contact k
+  // acts on a solver body, and as what constraint.
   const LargeVector<StepContactKey>& keys = current_step_contact_keys();
-  for (std::size_t k = 0; k < step_contacts.size(); ++k) {
+  const auto constraint_of = [&](std::size_t k, detail::ConstraintBodies& cb) {
     const StepContactKey& key = keys[k];
-    if (!key.acting) continue;
+    if (!key.acting) return false;
     const std::int32_t ia = body_solver_index[key.body_a], ib = body_solver_index[key.body_b];
-    if (ia < 0 && ib < 0) continue;
-    constraint_contacts.push_back(step_contacts[k]);
-    constraint_bodies.push_back({ia < 0 ? still : ia, ib < 0 ? still : ib, fixed(ia), fixed(ib),
-                                 key.color, key.hit_events});
-  }
-  // Constraints in order of their first moving body (a stable counting sort): neighbouring
-  // constraints then touch neighbouring bodies and the solver's gathers stay in cache.
+    if (ia < 0 && ib < 0) return false;
+    cb = {ia < 0 ? still : ia, ib < 0 ? still : ib, fixed(ia),
+          fixed(ib),           key.color,           key.hit_events};
+    return true;
+  };
+  const auto first_body = [&](const detail::ConstraintBodies& cb) {
+    return static_cast<std::size_t>(cb.a == still ? cb.b : cb.a);
+  };
+  // The step contacts in one run per worker: each run counts its constraints per first body,
+  // the counts are summed body by body and run by run, and each run puts its constraints where
+  // the sums say: the order a single run gives.
   {
-    const std::size_t n = constraint_contacts.size();
-    sort_count.assign(solver_bodies.size() + 1, 0);
-    const auto key = [&](const detail::ConstraintBodies& cb) {
-      return static_cast<std::size_t>(cb.a == still ? cb.b : cb.a);
-    };
-    for (const detail::ConstraintBodies& cb : constraint_bodies) ++sort_count[key(cb) + 1];
-    for (std::size_t i = 1; i < sort_count.size(); ++i) sort_count[i] += sort_count[i - 1];
-    sorted_contacts.resize(n);
-    sorted_bodies.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t at = sort_count[key(constraint_bodies[i])]++;
-      sorted_contacts[at] = constraint_contacts[i];
-      sorted_bodies[at] = constraint_bodies[i];
+    const std::uint32_t runs = tasks.workers();
+    const std::size_t first_bodies = solver_bodies.size();
+    const auto run_begin = [&](std::uint32_t run) { return step_contacts.size() * run / runs; };
+    run_counts.assign(runs * first_bodies, 0);
+    tasks.parallel_for(runs, 1, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+      for (std::uint32_t run = begin; run < end; ++run) {
+        std::uint32_t* counts = run_counts.data() + run * first_bodies;
+        detail::ConstraintBodies cb;
+        for (std::size_t k = run_begin(run), last = run_begin(run + 1); k < last; ++k) {
+          if (constraint_of(k, cb)) ++counts[first_body(cb)];
+        }
+      }
+    });
+    std::uint32_t placed = 0;
+    for (std::size_t body = 0; body < first_bodies; ++body) {
+      for (std::uint32_t run = 0; run < runs; ++run) {
+        std::uint32_t& count = run_counts[run * first_bodies + body];
+        const std::uint32_t here = count;
+        count = placed;
+        placed += here;
+      }
     }
-    constraint_contacts.swap(sorted_contacts);
-    constraint_bodies.swap(sorted_bodies);
+    constraint_contacts.resize(placed);
+    constraint_bodies.resize(placed);
+    tasks.parallel_for(runs, 1, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+      for (std::uint32_t run = begin; run < end; ++run) {
+        std::uint32_t* next = run_counts.data() + run * first_bodies;
+        detail::ConstraintBodies cb;
+        for (std::size_t k = run_begin(run), last = run_begin(run + 1); k < last; ++k) {
+          if (!constraint_of(k, cb)) continue;
+          const std::uint32_t at = next[first_body(cb)]++;
+          constraint_contacts[at] = step_contacts[k];
+          constraint_bodies[at] = cb;
+        }
+      }
+    });
   }
-  contact_solver.begin(constraint_bodies, still, def.simd_solver, tasks.workers());
+  contact_solver.begin(constraint_bodies, still, def.simd_solver, tasks);
 
   // Per-constraint body data comes from the compact solver arrays, not the body records.
   const auto info = [&](std::uint32_t body, std::int32_t index) {

@@ -76,6 +76,10 @@ struct WorldState {
   // Bodies that may be awake (every awake body is here; stale entries are dropped once a
   // step): a step visits these and their contacts only, so a sleeping island costs nothing.
   LargeVector<std::uint32_t> awake_list;
+  // Whether compact_awake_list would change nothing: no entry added, put to sleep, made
+  // static, disabled or destroyed since it last ran. Not state: compacting a compact list
+  // leaves it as it is, so a restored world, which starts with it false, steps the same.
+  bool awake_list_compact = false;
   LargeVector<std::uint32_t> step_contacts;  // contacts of moving bodies this step, in order
   // One bit per contact: marked from the moving bodies' contact lists and read off in order
   // into step_contacts (no sort, and the contacts of sleeping bodies are never touched).
@@ -140,8 +144,9 @@ struct WorldState {
   // one that did (stop_diverged); empty when every solve held.
   std::vector<std::uint8_t> stopped;
   LargeVector<detail::SolverBodyInfo> solver_info;
-  LargeVector<std::uint32_t> constraint_contacts, sorted_contacts, sort_count;
-  LargeVector<detail::ConstraintBodies> constraint_bodies, sorted_bodies;
+  LargeVector<std::uint32_t> constraint_contacts;
+  LargeVector<detail::ConstraintBodies> constraint_bodies;
+  LargeVector<std::uint32_t> run_counts;  // per worker and first body, while ordering them
   detail::ContactSolver contact_solver;
   std::int32_t still_body = 0;                   // the solver body standing in for the unmoving
   std::vector<std::uint32_t> step_joints;        // joints of moving bodies this step, solve order
