@@ -39,6 +39,7 @@
 #include "constraint_graph.hpp"
 #include "contact_kernels.hpp"
 #include "joint_solver.hpp"
+#include "run_counts.hpp"
 #include "task_runner.hpp"
 
 namespace mink::detail {
@@ -73,13 +74,12 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
     f.restitution.clear();
   }
   // Colours come from the constraint graph, which keeps them from step to step. The
-  // constraints are laid out colour by colour, in their order within each: in one run per
-  // worker, each counting its constraints per colour, then putting them where the counts,
-  // summed colour by colour and run by run, say (the order a single run gives).
+  // constraints are laid out colour by colour, in their order within each, in one run per
+  // worker (run_counts.hpp).
   const auto count = static_cast<std::uint32_t>(constraints.size());
   const std::uint32_t runs = tasks.workers();
-  const auto run_begin = [&](std::uint32_t run) {
-    return static_cast<std::uint32_t>(std::uint64_t{count} * run / runs);
+  const auto run_first = [&](std::uint32_t run) {
+    return static_cast<std::uint32_t>(run_begin(count, run, runs));
   };
   color_of_.resize(count);
   slot_.resize(count);
@@ -90,7 +90,7 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
     for (std::uint32_t run = begin; run < end; ++run) {
       // Counted locally: the arrays written in the loop could alias the shared ones.
       std::array<std::uint32_t, kColorCount + 1> counts{};
-      for (std::uint32_t i = run_begin(run), last = run_begin(run + 1); i < last; ++i) {
+      for (std::uint32_t i = run_first(run), last = run_first(run + 1); i < last; ++i) {
         color_of_[i] = constraints[i].color;
         ++counts[constraints[i].color];
       }
@@ -99,8 +99,9 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
   });
   std::array<std::uint32_t, kColorCount + 1> counts{};
   for (std::uint32_t run = 0; run < runs; ++run) {
-    for (std::size_t c = 0; c <= kColorCount; ++c)
+    for (std::size_t c = 0; c <= kColorCount; ++c) {
       counts[c] += run_colors_[run * kRunColorStride + c];
+    }
   }
   overflow_count_ = counts[kColorCount];
   color_begin_.assign(kColorCount + 2, 0);
@@ -109,21 +110,13 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
   for (std::size_t c = 0; c < kColorCount; ++c) {
     wide_begin_[c + 1] = wide_begin_[c] + (counts[c] + kWideLanes - 1) / kWideLanes;
   }
-  for (std::size_t c = 0; c <= kColorCount; ++c) {
-    std::uint32_t position = color_begin_[c];
-    for (std::uint32_t run = 0; run < runs; ++run) {
-      std::uint32_t& at = run_colors_[run * kRunColorStride + c];
-      const std::uint32_t here = at;
-      at = position;
-      position += here;
-    }
-  }
+  place_runs(run_colors_, runs, kRunColorStride, kColorCount + 1);
   // Slots: position within the colour gives the batch and the lane directly.
   tasks.parallel_for(runs, 1, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
     for (std::uint32_t run = begin; run < end; ++run) {
       std::array<std::uint32_t, kColorCount + 1> next;
       std::copy_n(run_colors_.begin() + run * kRunColorStride, next.size(), next.begin());
-      for (std::uint32_t i = run_begin(run), last = run_begin(run + 1); i < last; ++i) {
+      for (std::uint32_t i = run_first(run), last = run_first(run + 1); i < last; ++i) {
         const std::uint8_t color = color_of_[i];
         const std::uint32_t position = next[color]++;
         order_[position] = i;

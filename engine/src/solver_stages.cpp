@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <numbers>
 
+#include "run_counts.hpp"
 #include "world_state.hpp"
 
 namespace mink {
@@ -177,39 +178,31 @@ void WorldState::prepare_contacts() {
   const auto first_body = [&](const detail::ConstraintBodies& cb) {
     return static_cast<std::size_t>(cb.a == still ? cb.b : cb.a);
   };
-  // The step contacts in one run per worker: each run counts its constraints per first body,
-  // the counts are summed body by body and run by run, and each run puts its constraints where
-  // the sums say: the order a single run gives.
+  // The step contacts in one run per worker (run_counts.hpp).
   {
     const std::uint32_t runs = tasks.workers();
     const std::size_t first_bodies = solver_bodies.size();
-    const auto run_begin = [&](std::uint32_t run) { return step_contacts.size() * run / runs; };
+    const auto run_first = [&](std::uint32_t run) {
+      return detail::run_begin(step_contacts.size(), run, runs);
+    };
     run_counts.assign(runs * first_bodies, 0);
     tasks.parallel_for(runs, 1, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
       for (std::uint32_t run = begin; run < end; ++run) {
         std::uint32_t* counts = run_counts.data() + run * first_bodies;
         detail::ConstraintBodies cb;
-        for (std::size_t k = run_begin(run), last = run_begin(run + 1); k < last; ++k) {
+        for (std::size_t k = run_first(run), last = run_first(run + 1); k < last; ++k) {
           if (constraint_of(k, cb)) ++counts[first_body(cb)];
         }
       }
     });
-    std::uint32_t placed = 0;
-    for (std::size_t body = 0; body < first_bodies; ++body) {
-      for (std::uint32_t run = 0; run < runs; ++run) {
-        std::uint32_t& count = run_counts[run * first_bodies + body];
-        const std::uint32_t here = count;
-        count = placed;
-        placed += here;
-      }
-    }
+    const std::uint32_t placed = detail::place_runs(run_counts, runs, first_bodies, first_bodies);
     constraint_contacts.resize(placed);
     constraint_bodies.resize(placed);
     tasks.parallel_for(runs, 1, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
       for (std::uint32_t run = begin; run < end; ++run) {
         std::uint32_t* next = run_counts.data() + run * first_bodies;
         detail::ConstraintBodies cb;
-        for (std::size_t k = run_begin(run), last = run_begin(run + 1); k < last; ++k) {
+        for (std::size_t k = run_first(run), last = run_first(run + 1); k < last; ++k) {
           if (!constraint_of(k, cb)) continue;
           const std::uint32_t at = next[first_body(cb)]++;
           constraint_contacts[at] = step_contacts[k];
