@@ -185,7 +185,7 @@ class ContactSolver {
     SolverReal restitution;
     SolverReal relative_velocity[2];
   };
-  std::vector<Bounce> restitution_;
+  std::vector<Bounce> restitution_, merged_;  // merged_: scratch for merging the workers
   // What set() finds per worker, merged by finish() in slot order.
   struct alignas(64) WorkerFindings {
     bool bouncy = false;
