@@ -201,12 +201,18 @@ void restitution_one(SolverBody* bodies, ContactConstraint& c, SolverReal thresh
     p.normal_impulse = accumulated;
     p.max_normal_impulse = smax(p.max_normal_impulse, impulse);
     const SolverReal px = impulse * c.nx, py = impulse * c.ny;
-    a.vx -= c.inv_mass_a * px;
-    a.vy -= c.inv_mass_a * py;
-    a.w -= c.inv_inertia_a * (p.ax * py - p.ay * px);
-    b.vx += c.inv_mass_b * px;
-    b.vy += c.inv_mass_b * py;
-    b.w += c.inv_inertia_b * (p.bx * py - p.by * px);
+    // A body the solver cannot move is left as it is (as the SIMD kernels leave it): a colour's
+    // bounces run in parallel, and such a body may be in several of them.
+    if (c.inv_mass_a != 0 || c.inv_inertia_a != 0) {
+      a.vx -= c.inv_mass_a * px;
+      a.vy -= c.inv_mass_a * py;
+      a.w -= c.inv_inertia_a * (p.ax * py - p.ay * px);
+    }
+    if (c.inv_mass_b != 0 || c.inv_inertia_b != 0) {
+      b.vx += c.inv_mass_b * px;
+      b.vy += c.inv_mass_b * py;
+      b.w += c.inv_inertia_b * (p.bx * py - p.by * px);
+    }
   }
 }
 

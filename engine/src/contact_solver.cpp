@@ -245,6 +245,7 @@ enum class StageKind : std::uint8_t {
   integrate_positions,
   joint_relax,
   relax,
+  restitution,  // once, after the substeps: a colour's bouncing constraints
 };
 
 // Every substep is the same list of stages; stage s of the run is stage s % per-substep of it.
@@ -331,6 +332,24 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
       stage_blocks_.push_back(block_count(st.end - st.begin, st.block_size));
     }
   }
+  // Restitution, once the substeps are done: the bouncing constraints colour by colour (in slot
+  // order, so a colour's are a range of them), each colour's in parallel as its solve is.
+  bounce_stages_.clear();
+  if (bouncy_ && wide_mode_) {
+    const auto by_slot = [](const Bounce& b, std::uint32_t slot) { return b.slot < slot; };
+    for (std::uint32_t c = 0; c < kColorCount; ++c) {
+      const auto first = std::lower_bound(restitution_.begin(), restitution_.end(),
+                                          kWideLanes * wide_begin_[c], by_slot);
+      const auto last =
+          std::lower_bound(first, restitution_.end(), kWideLanes * wide_begin_[c + 1], by_slot);
+      if (first == last) continue;
+      const auto begin = static_cast<std::uint32_t>(first - restitution_.begin());
+      const auto end = static_cast<std::uint32_t>(last - restitution_.begin());
+      bounce_stages_.push_back({StageKind::restitution, c, begin, end, split(end - begin, 64)});
+      stage_blocks_.push_back(block_count(end - begin, bounce_stages_.back().block_size));
+    }
+  }
+  const std::size_t substep_stages = per_substep * static_cast<std::size_t>(settings.substeps);
 
   struct Context {
     ContactSolver* solver;
@@ -338,12 +357,13 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
     std::span<const SolverBodyParams> params;
     const SolverSettings* settings;
     JointStages* joints;
-    std::size_t per_substep;
-  } context{this, bodies, params, &settings, joints, per_substep};
+    std::size_t per_substep, substep_stages;
+  } context{this, bodies, params, &settings, joints, per_substep, substep_stages};
   const auto run_block = [](void* opaque, std::uint32_t stage, std::uint32_t block) {
     const Context& x = *static_cast<Context*>(opaque);
     ContactSolver& self = *x.solver;
-    const Stage& st = self.stages_[stage % x.per_substep];
+    const Stage& st = stage < x.substep_stages ? self.stages_[stage % x.per_substep]
+                                               : self.bounce_stages_[stage - x.substep_stages];
     const std::uint32_t begin = st.begin + block * st.block_size;
     const std::uint32_t end = std::min(st.end, begin + st.block_size);
     SolverBody* body_data = x.bodies.data();
@@ -390,32 +410,33 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
         }
         return;
       }
+      case StageKind::restitution:
+        for (std::uint32_t i = begin; i < end; ++i) {
+          self.bounce(body_data, self.restitution_[i], x.settings->restitution_threshold);
+        }
+        return;
     }
   };
   stage_runner_.run(tasks, stage_blocks_, run_block, &context);
 
-  SolverBody* body_data = bodies.data();
-  WideMaxImpulse* max_data = max_impulse_.empty() ? nullptr : max_impulse_.data();
-  const auto scalar_pass = [&](auto&& fn) {
-    for (ContactConstraint& c : scalar_) fn(c);
-  };
   if (!bouncy_) return;
-  // Restitution, once per step and rare: one at a time, colours first, then the overflow.
+  // The overflow's (or, for the scalar solver, every) bouncing constraint, one at a time.
   const SolverReal threshold = settings.restitution_threshold;
-  for (const Bounce& bounce : restitution_) {
-    const std::uint32_t slot = bounce.slot;
-    WideConstraint& w = wide_[slot / kWideLanes];
-    const int lane = static_cast<int>(slot % kWideLanes);
-    ContactConstraint c = unpack(w, lane);
-    c.restitution = bounce.restitution;
-    for (int j = 0; j < 2; ++j) {
-      c.points[j].relative_velocity = bounce.relative_velocity[j];
-      c.points[j].max_normal_impulse = max_data[slot / kWideLanes].point[j][lane];
-    }
-    restitution_one(body_data, c, threshold);
-    for (int j = 0; j < 2; ++j) w.points[j].normal_impulse[lane] = c.points[j].normal_impulse;
+  for (ContactConstraint& c : scalar_) restitution_one(bodies.data(), c, threshold);
+}
+
+void ContactSolver::bounce(SolverBody* bodies, const Bounce& bounce, SolverReal threshold) {
+  const std::uint32_t slot = bounce.slot;
+  WideConstraint& w = wide_[slot / kWideLanes];
+  const int lane = static_cast<int>(slot % kWideLanes);
+  ContactConstraint c = unpack(w, lane);
+  c.restitution = bounce.restitution;
+  for (int j = 0; j < 2; ++j) {
+    c.points[j].relative_velocity = bounce.relative_velocity[j];
+    c.points[j].max_normal_impulse = max_impulse_[slot / kWideLanes].point[j][lane];
   }
-  scalar_pass([&](ContactConstraint& c) { restitution_one(body_data, c, threshold); });
+  restitution_one(bodies, c, threshold);
+  for (int j = 0; j < 2; ++j) w.points[j].normal_impulse[lane] = c.points[j].normal_impulse;
 }
 
 }  // namespace mink::detail

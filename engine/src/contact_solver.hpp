@@ -192,8 +192,12 @@ class ContactSolver {
     std::vector<Bounce> restitution;
   };
   std::vector<WorkerFindings> findings_;
+  // Restitution of one bouncing constraint of the SIMD batches (its lane read out and the
+  // bounce applied one at a time; the colour's others run alongside).
+  void bounce(SolverBody* bodies, const Bounce& bounce, SolverReal threshold);
   struct Stage;
   std::vector<Stage> stages_;                // one substep's stages
+  std::vector<Stage> bounce_stages_;         // restitution's, once after the substeps
   std::vector<std::uint32_t> stage_blocks_;  // blocks per stage, every substep
   StageRunner stage_runner_;
 };
