@@ -351,10 +351,11 @@ bool WorldState::update_manifold(Contact& c) const {
   return touching;
 }
 
-// Marks the body's contacts as the step's. `concurrent`: other threads mark other bodies at
-// the same time.
-void WorldState::mark_step_contacts(const Body& body, bool concurrent) {
-  for (const std::uint32_t ci : body.contacts) detail::set_mark(step_contact_marks, ci, concurrent);
+// Marks the body's contacts as the step's, in `worker`'s own marks: two workers' bodies share
+// contacts, and marking one set of words from both made the cache lines bounce between them.
+void WorldState::mark_step_contacts(const Body& body, std::uint32_t worker) {
+  std::uint64_t* marks = step_contact_marks.data() + std::size_t{worker} * step_contact_words;
+  for (const std::uint32_t ci : body.contacts) marks[ci >> 6] |= std::uint64_t{1} << (ci & 63);
 }
 
 const LargeVector<WorldState::StepContactKey>& WorldState::current_step_contact_keys() {
@@ -371,8 +372,13 @@ const LargeVector<WorldState::StepContactKey>& WorldState::current_step_contact_
 void WorldState::collect_step_contacts() {
   step_contacts.clear();
   step_contact_keys_valid = false;
-  for (std::size_t word = 0; word < step_contact_marks.size(); ++word) {
-    for (std::uint64_t bits = step_contact_marks[word]; bits != 0; bits &= bits - 1) {
+  const std::size_t workers =
+      step_contact_marks.size() / std::max<std::size_t>(step_contact_words, 1);
+  for (std::size_t word = 0; word < step_contact_words; ++word) {
+    std::uint64_t marked = 0;
+    for (std::size_t w = 0; w < workers; ++w)
+      marked |= step_contact_marks[w * step_contact_words + word];
+    for (std::uint64_t bits = marked; bits != 0; bits &= bits - 1) {
       step_contacts.push_back(static_cast<std::uint32_t>(word * 64 + std::countr_zero(bits)));
     }
   }
@@ -386,12 +392,12 @@ void WorldState::collide() {
   // The contacts of moving bodies, in contact order (the order events and the solver use),
   // marked from the bodies in parallel.
   compact_awake_list();
-  step_contact_marks.assign((contacts.size() + 63) / 64, 0);
-  const bool concurrent = tasks.workers() > 1;
+  step_contact_words = (contacts.size() + 63) / 64;
+  step_contact_marks.assign(step_contact_words * tasks.workers(), 0);
   tasks.parallel_for(static_cast<std::uint32_t>(awake_list.size()), 256,
-                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
                        for (std::uint32_t k = begin; k < end; ++k) {
-                         mark_step_contacts(bodies[awake_list[k]], concurrent);
+                         mark_step_contacts(bodies[awake_list[k]], worker);
                        }
                      });
   collect_step_contacts();

@@ -83,7 +83,9 @@ struct WorldState {
   LargeVector<std::uint32_t> step_contacts;  // contacts of moving bodies this step, in order
   // One bit per contact: marked from the moving bodies' contact lists and read off in order
   // into step_contacts (no sort, and the contacts of sleeping bodies are never touched).
+  // Per worker, step_contact_words words of them (collect_step_contacts takes their union).
   std::vector<std::uint64_t> step_contact_marks;
+  std::size_t step_contact_words = 0;
   std::vector<std::uint8_t> collide_changes;  // per step contact: what collide() must update
   // Per step contact, as collide() left it: what the island pass and the solver's gathering
   // of constraints read, so those serial passes stay off the contact records. Valid while
@@ -212,7 +214,7 @@ struct WorldState {
   bool should_make_contact(std::uint32_t shape_a, std::uint32_t shape_b) const;
   void update_pairs();
   // Marks the body's contacts for this step; collect_step_contacts lists the marked ones.
-  void mark_step_contacts(const detail::Body& body, bool concurrent = false);
+  void mark_step_contacts(const detail::Body& body, std::uint32_t worker = 0);
   void collect_step_contacts();
   bool update_manifold(detail::Contact& contact) const;
   void collide();
