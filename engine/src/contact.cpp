@@ -376,8 +376,9 @@ void WorldState::collect_step_contacts() {
       step_contact_marks.size() / std::max<std::size_t>(step_contact_words, 1);
   for (std::size_t word = 0; word < step_contact_words; ++word) {
     std::uint64_t marked = 0;
-    for (std::size_t w = 0; w < workers; ++w)
+    for (std::size_t w = 0; w < workers; ++w) {
       marked |= step_contact_marks[w * step_contact_words + word];
+    }
     for (std::uint64_t bits = marked; bits != 0; bits &= bits - 1) {
       step_contacts.push_back(static_cast<std::uint32_t>(word * 64 + std::countr_zero(bits)));
     }
