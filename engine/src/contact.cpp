@@ -351,11 +351,9 @@ bool WorldState::update_manifold(Contact& c) const {
   return touching;
 }
 
-// Marks the body's contacts as the step's, in `worker`'s own marks: two workers' bodies share
-// contacts, and marking one set of words from both made the cache lines bounce between them.
+// Marks the body's contacts as the step's, among `worker`'s marks.
 void WorldState::mark_step_contacts(const Body& body, std::uint32_t worker) {
-  std::uint64_t* marks = step_contact_marks.data() + std::size_t{worker} * step_contact_words;
-  for (const std::uint32_t ci : body.contacts) marks[ci >> 6] |= std::uint64_t{1} << (ci & 63);
+  for (const std::uint32_t ci : body.contacts) step_contact_marks.mark(ci, worker);
 }
 
 const LargeVector<WorldState::StepContactKey>& WorldState::current_step_contact_keys() {
@@ -372,14 +370,8 @@ const LargeVector<WorldState::StepContactKey>& WorldState::current_step_contact_
 void WorldState::collect_step_contacts() {
   step_contacts.clear();
   step_contact_keys_valid = false;
-  const std::size_t workers =
-      step_contact_marks.size() / std::max<std::size_t>(step_contact_words, 1);
-  for (std::size_t word = 0; word < step_contact_words; ++word) {
-    std::uint64_t marked = 0;
-    for (std::size_t w = 0; w < workers; ++w) {
-      marked |= step_contact_marks[w * step_contact_words + word];
-    }
-    for (std::uint64_t bits = marked; bits != 0; bits &= bits - 1) {
+  for (std::size_t word = 0; word < step_contact_marks.words(); ++word) {
+    for (std::uint64_t bits = step_contact_marks.word(word); bits != 0; bits &= bits - 1) {
       step_contacts.push_back(static_cast<std::uint32_t>(word * 64 + std::countr_zero(bits)));
     }
   }
@@ -393,8 +385,7 @@ void WorldState::collide() {
   // The contacts of moving bodies, in contact order (the order events and the solver use),
   // marked from the bodies in parallel.
   compact_awake_list();
-  step_contact_words = (contacts.size() + 63) / 64;
-  step_contact_marks.assign(step_contact_words * tasks.workers(), 0);
+  step_contact_marks.reset(contacts.size(), tasks.workers());
   tasks.parallel_for(static_cast<std::uint32_t>(awake_list.size()), 256,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
                        for (std::uint32_t k = begin; k < end; ++k) {

@@ -49,8 +49,9 @@ struct alignas(64) Contact {
   Vec2 approach_point{0, 0};
   ManifoldCache cache;
 };
-static_assert(offsetof(Contact, body_b) + sizeof(std::uint32_t) <= 128,
-              "what the solver's set-up reads of a contact fills two cache lines");
+// What the solver's set-up reads of a contact: its first two cache lines.
+inline constexpr std::size_t kContactSetupBytes = 128;
+static_assert(offsetof(Contact, body_b) + sizeof(std::uint32_t) <= kContactSetupBytes);
 
 inline std::uint64_t pair_key(ProxyId a, ProxyId b) {
   return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);

@@ -97,20 +97,16 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
       std::copy(counts.begin(), counts.end(), run_colors_.begin() + run * kRunColorStride);
     }
   });
-  std::array<std::uint32_t, kColorCount + 1> counts{};
-  for (std::uint32_t run = 0; run < runs; ++run) {
-    for (std::size_t c = 0; c <= kColorCount; ++c) {
-      counts[c] += run_colors_[run * kRunColorStride + c];
-    }
-  }
-  overflow_count_ = counts[kColorCount];
-  color_begin_.assign(kColorCount + 2, 0);
+  // Each run's first position per colour; the first run's are where the colours begin.
+  const std::uint32_t placed = place_runs(run_colors_, runs, kRunColorStride, kColorCount + 1);
+  color_begin_.assign(run_colors_.begin(), run_colors_.begin() + kColorCount + 1);
+  color_begin_.push_back(placed);
+  overflow_count_ = placed - color_begin_[kColorCount];
   wide_begin_.assign(kColorCount + 1, 0);
-  for (std::size_t c = 0; c <= kColorCount; ++c) color_begin_[c + 1] = color_begin_[c] + counts[c];
   for (std::size_t c = 0; c < kColorCount; ++c) {
-    wide_begin_[c + 1] = wide_begin_[c] + (counts[c] + kWideLanes - 1) / kWideLanes;
+    const std::uint32_t count = color_begin_[c + 1] - color_begin_[c];
+    wide_begin_[c + 1] = wide_begin_[c] + (count + kWideLanes - 1) / kWideLanes;
   }
-  place_runs(run_colors_, runs, kRunColorStride, kColorCount + 1);
   // Slots: position within the colour gives the batch and the lane directly.
   tasks.parallel_for(runs, 1, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
     for (std::uint32_t run = begin; run < end; ++run) {
@@ -248,7 +244,8 @@ enum class StageKind : std::uint8_t {
   restitution,  // once, after the substeps: a colour's bouncing constraints
 };
 
-// Every substep is the same list of stages; stage s of the run is stage s % per-substep of it.
+// Every substep is the same list of stages; stage s of the substeps is stage s % per-substep of
+// it, and restitution's stages follow the last substep.
 struct ContactSolver::Stage {
   StageKind kind;
   std::uint32_t color;  // colour stages: kColorCount is the overflow

@@ -169,7 +169,7 @@ class ContactSolver {
   std::vector<std::uint32_t> order_;  // constraint indices by slot
   std::vector<ContactConstraint> scalar_;
   std::vector<std::uint32_t> color_begin_;  // colour positions, one past the last at the end
-  std::vector<WideConstraint, LargePageAllocator<WideConstraint>> wide_;
+  LargeVector<WideConstraint> wide_;
   std::vector<std::uint32_t> wide_begin_;   // into wide_, per colour
   std::vector<std::uint32_t> batch_first_;  // per wide constraint, its first lane's position
   std::vector<std::uint8_t> color_of_;
@@ -198,7 +198,7 @@ class ContactSolver {
   struct Stage;
   std::vector<Stage> stages_;                // one substep's stages
   std::vector<Stage> bounce_stages_;         // restitution's, once after the substeps
-  std::vector<std::uint32_t> stage_blocks_;  // blocks per stage, every substep
+  std::vector<std::uint32_t> stage_blocks_;  // blocks per stage: every substep's, then those
   StageRunner stage_runner_;
 };
 

@@ -63,7 +63,7 @@ class IdPool {
     return slots_[id.index];
   }
 
-  using Slots = std::vector<Slot, LargePageAllocator<Slot>>;
+  using Slots = LargeVector<Slot>;
   Slots& slots() noexcept { return slots_; }
   const Slots& slots() const noexcept { return slots_; }
   Slot& operator[](std::uint32_t index) { return slots_[index]; }

@@ -172,30 +172,29 @@ void JointStages::solve(SolverBody* bodies, bool use_bias, std::uint32_t begin, 
 }  // namespace detail
 
 void WorldState::prepare_joints() {
-  // The joints of moving bodies: marked from the bodies' lists (in parallel, an atomic or per
-  // word when other threads mark too), those with a disabled body or none dynamic unmarked in
-  // parallel, word by word, then read off in slot order into their colours (the overflow
-  // last), which is the order they are solved in.
+  // The joints of moving bodies: marked from the bodies' lists (in parallel, each worker in
+  // marks of its own), those with a disabled body or none dynamic unmarked in parallel, word by
+  // word, then read off in slot order into their colours (the overflow last), which is the
+  // order they are solved in.
   constexpr std::size_t kColors = detail::kGraphColors + 1;
-  joint_marks.assign((joints.size() + 63) / 64, 0);
+  joint_marks.reset(joints.size(), tasks.workers());
   joint_slot_color.resize(joints.size());
-  const bool concurrent = tasks.workers() > 1;
   // A world without joints skips the visit to every moving body's record.
   if (joints.live() > 0) {
     tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 256,
-                       [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
                          for (std::uint32_t k = begin; k < end; ++k) {
                            for (const std::uint32_t j : bodies[solver_to_body[k]].joints) {
-                             detail::set_mark(joint_marks, j, concurrent);
+                             joint_marks.mark(j, worker);
                            }
                          }
                        });
   }
   tasks.parallel_for(
-      static_cast<std::uint32_t>(joint_marks.size()), 16,
+      static_cast<std::uint32_t>(joint_marks.words()), 16,
       [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
         for (std::uint32_t word = begin; word < end; ++word) {
-          std::uint64_t kept = joint_marks[word];
+          std::uint64_t kept = joint_marks.word(word);
           for (std::uint64_t bits = kept; bits != 0; bits &= bits - 1) {
             const int bit = std::countr_zero(bits);
             const detail::JointBodies& joint =
@@ -210,13 +209,13 @@ void WorldState::prepare_joints() {
             joint_slot_color[word * 64 + static_cast<std::uint32_t>(bit)] =
                 static_cast<std::uint8_t>(std::min<std::size_t>(joint.color, kColors - 1));
           }
-          joint_marks[word] = kept;
+          joint_marks.set_word(word, kept);
         }
       });
   joint_color_begin.assign(kColors + 1, 0);
   step_joints.clear();
-  for (std::size_t word = 0; word < joint_marks.size(); ++word) {
-    for (std::uint64_t bits = joint_marks[word]; bits != 0; bits &= bits - 1) {
+  for (std::size_t word = 0; word < joint_marks.words(); ++word) {
+    for (std::uint64_t bits = joint_marks.word(word); bits != 0; bits &= bits - 1) {
       const auto j = static_cast<std::uint32_t>(word * 64 + std::countr_zero(bits));
       step_joints.push_back(j);
       ++joint_color_begin[joint_slot_color[j] + 1];

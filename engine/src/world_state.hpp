@@ -1,7 +1,6 @@
 #pragma once
 
 #include <array>
-#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +19,7 @@
 #include "sensor.hpp"
 #include "shape.hpp"
 #include "task_runner.hpp"
+#include "worker_marks.hpp"
 
 namespace mink {
 
@@ -32,16 +32,6 @@ void check_step_length(Real time_step, int substeps, const std::string& what);
 // Finite and within max_setting_magnitude on each axis; `what` names it in the message.
 void check_gravity(const Vec2& gravity, const std::string& what);
 
-// Sets bit `index` of `marks`. `concurrent`: other threads set bits at the same time, so the
-// word is set with an atomic or (a bit set twice is set all the same).
-inline void set_mark(std::vector<std::uint64_t>& marks, std::uint32_t index, bool concurrent) {
-  const std::uint64_t bit = std::uint64_t{1} << (index & 63);
-  if (concurrent) {
-    std::atomic_ref<std::uint64_t>(marks[index >> 6]).fetch_or(bit, std::memory_order_relaxed);
-  } else {
-    marks[index >> 6] |= bit;
-  }
-}
 }  // namespace detail
 
 // Everything a World owns. Each concept's data and operations live in their own file (body,
@@ -83,9 +73,7 @@ struct WorldState {
   LargeVector<std::uint32_t> step_contacts;  // contacts of moving bodies this step, in order
   // One bit per contact: marked from the moving bodies' contact lists and read off in order
   // into step_contacts (no sort, and the contacts of sleeping bodies are never touched).
-  // Per worker, step_contact_words words of them (collect_step_contacts takes their union).
-  std::vector<std::uint64_t> step_contact_marks;
-  std::size_t step_contact_words = 0;
+  detail::WorkerMarks step_contact_marks;
   std::vector<std::uint8_t> collide_changes;  // per step contact: what collide() must update
   // Per step contact, as collide() left it: what the island pass and the solver's gathering
   // of constraints read, so those serial passes stay off the contact records. Valid while
@@ -153,7 +141,7 @@ struct WorldState {
   std::int32_t still_body = 0;                   // the solver body standing in for the unmoving
   std::vector<std::uint32_t> step_joints;        // joints of moving bodies this step, solve order
   std::vector<std::uint32_t> joint_color_begin;  // where each colour starts in step_joints
-  std::vector<std::uint64_t> joint_marks;        // one bit per joint slot, while gathering
+  detail::WorkerMarks joint_marks;               // one bit per joint slot, while gathering
   std::vector<std::uint8_t> joint_slot_color;    // per joint slot: its colour, while gathering
   std::vector<std::uint32_t> joint_order;        // step_joints in slot order
   std::vector<std::uint32_t> joint_position;     // per joint_order entry: its place in step_joints

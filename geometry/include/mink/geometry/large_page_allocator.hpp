@@ -26,10 +26,10 @@
 
 namespace mink {
 
-/// @brief An allocator for the engine's large arrays (bodies, shapes, contacts, solver records,
-/// broadphase proxies) that asks the kernel for 2 MiB pages.
+/// @brief An allocator for the engine's large arrays (bodies, shapes, joints, contacts, solver
+/// records) that asks the kernel for 2 MiB pages.
 ///
-/// Why: the step reads these arrays scattered (a constraint's contact, a pair's proxies), one
+/// Why: the step reads these arrays scattered (a constraint's contact, a contact's bodies), one
 /// record per few kilobytes, so with 4 KiB pages nearly every read also misses the address
 /// translation cache; with 2 MiB pages a 30 MB contact array needs 15 entries instead of 7,500.
 /// Arrays of 2 MiB and more are mapped on their own, aligned to 2 MiB and advised
@@ -50,7 +50,7 @@ class LargePageAllocator {
 #if MINK_LARGE_PAGES
     if (n > max_size()) throw std::bad_array_new_length();
     const std::size_t bytes = n * sizeof(T);
-    if (bytes >= kThreshold) {
+    if (bytes >= kHugePage) {
       const std::size_t size = mapped_size(bytes);
       // One page more than asked, so an aligned start lies within; the ends beyond it go back.
       void* raw = mmap(nullptr, size + kHugePage, PROT_READ | PROT_WRITE,
@@ -72,7 +72,7 @@ class LargePageAllocator {
   void deallocate(T* p, std::size_t n) noexcept {
 #if MINK_LARGE_PAGES
     const std::size_t bytes = n * sizeof(T);
-    if (bytes >= kThreshold) {
+    if (bytes >= kHugePage) {
       munmap(p, mapped_size(bytes));
       return;
     }
@@ -90,7 +90,6 @@ class LargePageAllocator {
 
  private:
   static constexpr std::size_t kHugePage = std::size_t{2} << 20;
-  static constexpr std::size_t kThreshold = std::size_t{2} << 20;
   static constexpr std::size_t mapped_size(std::size_t bytes) noexcept {
     return (bytes + kHugePage - 1) / kHugePage * kHugePage;
   }
