@@ -260,7 +260,42 @@ void SweepAndPrune::refresh_fixed() {
   std::sort(fixed_entries_.begin(), fixed_entries_.end(), [](const Entry& x, const Entry& y) {
     return x.lo0 != y.lo0 ? x.lo0 < y.lo0 : x.id < y.id;
   });
+  const std::size_t count = fixed_entries_.size();
+  fixed_lo0_.resize(count);
+  for (std::size_t k = 0; k < count; ++k) fixed_lo0_[k] = fixed_entries_[k].lo0;
+  // As many buckets of lower bounds as entries, each starting where its first entry is.
+  fixed_bucket_start_.assign(count + 1, static_cast<std::uint32_t>(count));
+  if (count > 0) {
+    fixed_bucket_origin_ = fixed_lo0_.front();
+    const Real span = fixed_lo0_.back() - fixed_bucket_origin_;
+    fixed_bucket_scale_ = span > 0 ? static_cast<Real>(count) / span : 0;
+    for (std::size_t k = count; k-- > 0;) {
+      fixed_bucket_start_[fixed_bucket(fixed_lo0_[k])] = static_cast<std::uint32_t>(k);
+    }
+    for (std::size_t b = count; b-- > 0;) {
+      fixed_bucket_start_[b] = std::min(fixed_bucket_start_[b], fixed_bucket_start_[b + 1]);
+    }
+  }
   fixed_stale_ = false;
+}
+
+// Which bucket x falls in: monotone in x, so an entry in an earlier bucket than x's lies
+// below x.
+std::size_t SweepAndPrune::fixed_bucket(Real x) const {
+  const Real t = (x - fixed_bucket_origin_) * fixed_bucket_scale_;
+  if (!(t > 0)) return 0;
+  const std::size_t last = fixed_lo0_.size() - 1;
+  return t >= static_cast<Real>(last) ? last : static_cast<std::size_t>(t);
+}
+
+// std::lower_bound's place for x among the fixed entries' lower bounds: from the start of x's
+// bucket, a few steps at most, where a binary search would branch unpredictably at every
+// step (continuous collision queries at scattered places).
+std::size_t SweepAndPrune::first_fixed_not_below(Real x) const {
+  if (fixed_lo0_.empty()) return 0;
+  std::size_t k = fixed_bucket_start_[fixed_bucket(x)];
+  while (k < fixed_lo0_.size() && fixed_lo0_[k] < x) ++k;
+  return k;
 }
 
 // Pairs that no longer overlap. Only a pair with a touched member can end, and testing it on
@@ -639,10 +674,12 @@ void SweepAndPrune::query_fixed(const Aabb& box, std::vector<ProxyId>& out) cons
     // An entry overlapping q starts at most the largest fixed extent before it (a step below
     // for each rounding: the extent's and the subtraction's).
     const Real from = below(below(q.lo0 - fixed_reach0_ * (1 + kReachSlack)));
-    auto it = std::lower_bound(fixed_entries_.begin(), fixed_entries_.end(), from,
-                               [](const Entry& e, Real x) { return e.lo0 < x; });
+    auto it = fixed_entries_.begin() + static_cast<std::ptrdiff_t>(first_fixed_not_below(from));
     for (; it != fixed_entries_.end() && it->lo0 <= q.hi0; ++it) {
-      if (overlap(*it, q)) found(*it);
+      // overlap() without its branches (its first test is the loop's): most entries a scan
+      // meets lie beside q on the other axis, at no pattern a branch could learn.
+      const bool hit = (q.lo0 <= it->hi0) & (it->lo1 <= q.hi1) & (q.lo1 <= it->hi1);
+      if (hit) found(*it);
     }
     for (const Entry& e : oversized_) {
       if (overlap(e, q)) found(e);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mink/narrowphase/collide.hpp"
+#include "prefetch.hpp"
 #include "world_state.hpp"
 
 namespace mink {
@@ -20,6 +21,10 @@ using detail::Contact;
 using detail::Shape;
 
 namespace {
+
+// How many contacts ahead the narrowphase asks for a contact's record (and half as many for
+// its bodies and shapes).
+constexpr std::uint32_t kCollideAhead = 8;
 
 // Lists the contact in the body's contacts; returns where.
 std::uint32_t add_contact_to(Body& body, std::uint32_t contact, bool other_fixed) {
@@ -276,6 +281,7 @@ bool WorldState::update_manifold(Contact& c) const {
     same_features = shift + turn * (body_a.extent + body_b.extent) < reuse_tolerance;
   }
 
+  c.features_kept = same_features;
   if (same_features) {
     // Move the stored surface points with their bodies and measure again; the impulses
     // stay.
@@ -377,6 +383,29 @@ void WorldState::collect_step_contacts() {
   }
 }
 
+// What a manifold's update reads of its pair's bodies (pose, velocity, extent) and shapes
+// (geometry and box).
+void WorldState::prefetch_pair(const Contact& c) const {
+  static_assert(offsetof(Body, extent) + sizeof(Real) <= 128);
+  detail::prefetch_bytes(&bodies[c.body_a], offsetof(Body, extent) + sizeof(Real));
+  detail::prefetch_bytes(&bodies[c.body_b], offsetof(Body, extent) + sizeof(Real));
+  detail::prefetch_bytes(&shapes[c.shape_a], offsetof(Shape, bare_box) + 1);
+  detail::prefetch_bytes(&shapes[c.shape_b], offsetof(Shape, bare_box) + 1);
+}
+
+// The polygons' arrays of a pair (their first lines: all of a small polygon's), unless its
+// manifold kept its features last step: resting pairs then leave them alone.
+void WorldState::prefetch_hulls(const Contact& c) const {
+  constexpr std::size_t kHullBytesAhead = 512;
+  if (c.features_kept) return;
+  for (const std::uint32_t s : {c.shape_a, c.shape_b}) {
+    if (const auto* polygon = std::get_if<RoundedPolygon>(&shapes[s].geometry)) {
+      const std::span<const Vec2> block = polygon->hull.storage();
+      detail::prefetch_bytes(block.data(), std::min(block.size_bytes(), kHullBytesAhead));
+    }
+  }
+}
+
 // Narrowphase for every contact with a moving body. A pair whose relative pose has moved
 // less than a tenth of the linear slop since its manifold was computed keeps the manifold's
 // features and only has its separations measured again (as persistent-manifold engines do):
@@ -402,6 +431,18 @@ void WorldState::collide() {
   tasks.parallel_for(static_cast<std::uint32_t>(step_contacts.size()), 64,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
                        for (std::uint32_t k = begin; k < end; ++k) {
+                         // Contacts, then their bodies and shapes, asked for ahead: records
+                         // scattered over memory, where the manifolds otherwise wait.
+                         if (k + kCollideAhead < end) {
+                           const Contact& ahead = contacts[step_contacts[k + kCollideAhead]];
+                           detail::prefetch_bytes(&ahead, sizeof(Contact));
+                         }
+                         if (k + kCollideAhead / 2 < end) {
+                           prefetch_pair(contacts[step_contacts[k + kCollideAhead / 2]]);
+                         }
+                         if (k + kCollideAhead / 4 < end) {
+                           prefetch_hulls(contacts[step_contacts[k + kCollideAhead / 4]]);
+                         }
                          Contact& c = contacts[step_contacts[k]];
                          const bool was_touching = c.touching;
                          const bool touching = update_manifold(c);

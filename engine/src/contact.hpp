@@ -46,6 +46,9 @@ struct alignas(64) Contact {
   // Whether each body is static or kinematic (fixed for the solver; it blocks no colour). Set
   // when the contact is made: a body's type change remakes its contacts.
   bool a_fixed = false, b_fixed = false;
+  // The last manifold update kept the features (only measured again): the next likely does
+  // too, and reads none of the shapes' arrays, which the narrowphase then does not ask for.
+  bool features_kept = false;
   Vec2 approach_point{0, 0};
   ManifoldCache cache;
 };

@@ -22,6 +22,7 @@
 #include <span>
 #include <variant>
 
+#include "prefetch.hpp"
 #include "world_state.hpp"
 
 namespace mink {
@@ -62,6 +63,8 @@ Sweep WorldState::body_sweep(std::uint32_t body) const {
 
 namespace {
 
+// Fast bodies' records asked for this many ahead of the one being swept.
+constexpr std::uint32_t kPrefetchAhead = 4;
 // A fast body's box this many times wider than the middle one's is scanned apart.
 constexpr Real kWideFactor = 8;
 // What a body may close on a chain segment in a step, as a share of its thinnest half-width,
@@ -283,13 +286,13 @@ bool is_still(const Sweep& sweep) {
 // contact's to keep apart (sweeping the surfaces would stop a body sliding along a floor at
 // once); the sweep then only keeps the shape's middle from crossing the other shape, which a
 // fast-spinning or corner-sliding body can otherwise do within one step.
-void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
-                            const Sweep& other_world_sweep) const {
+void WorldState::sweep_pair(FastBody& fast, const detail::LocalSweep& local,
+                            std::uint32_t other_shape, const Sweep& other_world_sweep) const {
   const Shape& o = shapes[other_shape];
   // Both sweeps measured from where the fast body starts, so that where the pair lies does not
   // round what is found (world_grid.hpp).
   const Vec2 frame_origin = fast.sweep.center0;
-  const Sweep& fast_sweep = fast.local_sweep;
+  const Sweep& fast_sweep = local.sweep;
   Sweep other_sweep = other_world_sweep;
   other_sweep.center0 -= frame_origin;
   other_sweep.center1 -= frame_origin;
@@ -304,29 +307,29 @@ void WorldState::sweep_pair(FastBody& fast, std::uint32_t other_shape,
     const Real target = slop_target(f.geometry, o.geometry, def.linear_slop);
     const auto* chain = std::get_if<ChainSegment>(&o.geometry);
     if (still && chain != nullptr &&
-        grazes_chain(shape_middle(f.geometry), fast_sweep, fast.local_ends, *chain, other_start,
+        grazes_chain(shape_middle(f.geometry), fast_sweep, local.ends, *chain, other_start,
                      kCoreFraction * bodies[fast.body].min_extent)) {
       continue;
     }
-    if (still && clear_of_a_face(f.geometry, fast_sweep, fast.local_ends, o.geometry, other_start,
+    if (still && clear_of_a_face(f.geometry, fast_sweep, local.ends, o.geometry, other_start,
                                  target + tolerance)) {
       continue;
     }
     const ShapeDistance start =
-        shape_distance(f.geometry, fast.local_ends.start, o.geometry, other_start);
+        shape_distance(f.geometry, local.ends.start, o.geometry, other_start);
     const bool near = start.overlap || start.distance < 4 * def.linear_slop;
     ShapeGeometry middle;
     if (near) {
       if (chain != nullptr) {
-        const Real crossing = middle_crossing(shape_middle(f.geometry), fast_sweep, fast.local_ends,
+        const Real crossing = middle_crossing(shape_middle(f.geometry), fast_sweep, local.ends,
                                               *chain, other_sweep, other_start, still, tolerance);
         if (crossing > 0 && crossing < fast.fraction) fast.fraction = crossing;
       }
       const std::optional<Circle> circle = middle_circle(f.geometry);
       if (!circle) continue;
       middle = *circle;
-      if (still && clear_of_a_face(middle, fast_sweep, fast.local_ends, o.geometry, other_start,
-                                   3 * tolerance)) {
+      if (still &&
+          clear_of_a_face(middle, fast_sweep, local.ends, o.geometry, other_start, 3 * tolerance)) {
         continue;
       }
     }
@@ -368,64 +371,43 @@ void WorldState::solve_continuous() {
   continuous.hits = 0;
   // The marked bodies, in body order (solver bodies are), so sensors meet them in a fixed
   // order.
-  std::size_t marked = 0;
-  for (const std::uint8_t mark : continuous.fast_mark) marked += mark;
-  if (continuous.fast.size() < marked) continuous.fast.resize(marked);
-  continuous.fast_count = marked;
-  const std::span<FastBody> fast_bodies = continuous.fast_bodies();
-  std::size_t next = 0;
-  for (std::uint32_t si = 0; si < continuous.fast_mark.size(); ++si) {
-    if (continuous.fast_mark[si] == 0) continue;
-    FastBody& fast = fast_bodies[next++];
-    fast.body = solver_to_body[si];
-    fast.solver_index = si;
-    fast.bullet = bodies[fast.body].bullet;
-    fast.box = continuous.fast_box[si];
-    fast.covered = continuous.fast_covered[si] != 0;
-    fast.fraction = 1;
-    fast.has_sweep = false;
+  std::vector<std::uint32_t>& fast_list = continuous.fast_list;
+  fast_list.clear();
+  for (std::uint32_t si = 0; si < continuous.fast_kind.size(); ++si) {
+    if (continuous.fast_kind[si] != 0) fast_list.push_back(si);
   }
-  counters.fast_bodies = marked;
-  if (marked == 0) return;
+  counters.fast_bodies = fast_list.size();
+  if (fast_list.empty()) return;
 
-  const auto count = static_cast<std::uint32_t>(marked);
+  const auto count = static_cast<std::uint32_t>(fast_list.size());
   continuous.candidates.resize(tasks.workers());
-  // The sweep (two arc tangents) waits until a body has something to meet, which most fast
-  // bodies, in free flight, do not; fast bodies meet each other on both their sweeps, so
-  // every sweep is needed then.
-  if (def.continuous_fast_pairs) {
-    tasks.parallel_for(count, 16, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-      for (std::uint32_t i = begin; i < end; ++i) {
-        FastBody& fast = fast_bodies[i];
-        fast.set_sweep(solver_sweep(fast.solver_index));
-        fast.rotation0 = Rotation::from_angle(fast.sweep.angle0);
-        fast.rotation1 = Rotation::from_angle(fast.sweep.angle1);
-      }
-    });
-  }
   // Fast bodies against each other: their boxes by lower x, so each finds its neighbours by a
   // short scan, those many times wider than the middle one apart.
   continuous.fast_by_x.clear();
   continuous.fast_wide.clear();
   if (def.continuous_fast_pairs) {
     std::vector<Real>& widths = continuous.widths;
+    std::vector<Real>& lower_x = continuous.lower_x;
     widths.resize(count);
+    lower_x.resize(count);
     for (std::uint32_t i = 0; i < count; ++i) {
-      widths[i] = fast_bodies[i].box.upper.x() - fast_bodies[i].box.lower.x();
+      const Aabb& box = continuous.fast_body(i).box;
+      widths[i] = box.upper.x() - box.lower.x();
+      lower_x[i] = box.lower.x();
     }
     const auto middle = widths.begin() + count / 2;
     std::nth_element(widths.begin(), middle, widths.end());
     const Real wide = kWideFactor * *middle;
     for (std::uint32_t i = 0; i < count; ++i) {
-      const Aabb& box = fast_bodies[i].box;
+      const Aabb& box = continuous.fast_body(i).box;
       (box.upper.x() - box.lower.x() > wide ? continuous.fast_wide : continuous.fast_by_x)
           .push_back(i);
     }
   }
+  const std::vector<Real>& lower_x = continuous.lower_x;
   std::sort(continuous.fast_by_x.begin(), continuous.fast_by_x.end(),
             [&](std::uint32_t x, std::uint32_t y) {
-              const Real ax = fast_bodies[x].box.lower.x(), bx = fast_bodies[y].box.lower.x();
-              return ax != bx ? ax < bx : x < y;
+              return lower_x[x] != lower_x[y] ? lower_x[x] < lower_x[y] : x < y;
             });
   // Where a body's scan may start: no box before the first place whose running largest upper
   // x reaches the body's lower x can overlap it.
@@ -433,7 +415,7 @@ void WorldState::solve_continuous() {
   continuous.fast_reach_x.resize(continuous.fast_by_x.size());
   Real reach = -std::numeric_limits<Real>::infinity();
   for (std::size_t k = 0; k < continuous.fast_by_x.size(); ++k) {
-    const Aabb& box = fast_bodies[continuous.fast_by_x[k]].box;
+    const Aabb& box = continuous.fast_body(continuous.fast_by_x[k]).box;
     continuous.fast_boxes_by_x[k] = box;
     reach = std::max(reach, box.upper.x());
     continuous.fast_reach_x[k] = reach;
@@ -441,8 +423,19 @@ void WorldState::solve_continuous() {
 
   tasks.parallel_for(count, 4, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
     std::vector<ProxyId> proxies;
+    detail::LocalSweep local;
     for (std::uint32_t i = begin; i < end; ++i) {
-      FastBody& fast = fast_bodies[i];
+      if (i + kPrefetchAhead < end) {
+        detail::prefetch_bytes(&continuous.fast_body(i + kPrefetchAhead), sizeof(FastBody));
+      }
+      FastBody& fast = continuous.fast_body(i);
+      // The sweep from the body's start, found for its first pair swept.
+      bool has_local = false;
+      const auto sweep_with = [&](std::uint32_t shape, const Sweep& other_sweep) {
+        if (!has_local) local = detail::LocalSweep(fast.sweep);
+        has_local = true;
+        sweep_pair(fast, local, shape, other_sweep);
+      };
       // Static and kinematic shapes (everything, for a bullet) whose broadphase boxes meet the
       // body's box over the step: from its contacts when its shapes stayed within their
       // broadphase boxes (the broadphase paired them with all of those), else from queries.
@@ -452,8 +445,8 @@ void WorldState::solve_continuous() {
         const Shape& o = shapes[index];
         if (broadphase.fat_aabb(o.proxy).overlaps(fast.box)) found.push_back(index);
       };
-      const Body& body = bodies[fast.body];
       if (fast.covered && !fast.bullet) {
+        const Body& body = bodies[fast.body];
         // Up to the last of its contacts with something static or kinematic.
         std::uint32_t left = body.fixed_contacts;
         for (std::size_t k = 0; left > 0; ++k) {
@@ -480,35 +473,37 @@ void WorldState::solve_continuous() {
           if (fast.bullet || bodies[o.body].type != BodyType::dynamic) found.push_back(index);
         }
       }
-      if (!fast.has_sweep && !found.empty()) fast.set_sweep(solver_sweep(fast.solver_index));
+      if (!fast.has_sweep && !found.empty()) {
+        fast.sweep = solver_sweep(fast.solver_index);
+        fast.has_sweep = true;
+      }
       // The same shape in any order of the broadphase gives the same first touch, but the
       // order is fixed anyway so the work done is too (and a shape met by several of the
       // body's shapes is swept once).
       std::sort(found.begin(), found.end());
       found.erase(std::unique(found.begin(), found.end()), found.end());
-      const Real slow = body.continuous_threshold * body.min_extent;
+      const Real slow = fast.slow;
       for (const std::uint32_t index : found) {
         const Sweep other = body_sweep(shapes[index].body);
         if (!fast.bullet && !is_still(other) &&
-            travel_relative_to(fast.sweep, body.extent, other) <= slow) {
+            travel_relative_to(fast.sweep, fast.extent, other) <= slow) {
           continue;
         }
-        sweep_pair(fast, index, other);
+        sweep_with(index, other);
       }
       // Other fast bodies (a bullet has met every dynamic shape already).
       if (fast.bullet || !def.continuous_fast_pairs) continue;
       const auto meet = [&](std::uint32_t j) {
-        const FastBody& other = fast_bodies[j];
+        const FastBody& other = continuous.fast_body(j);
         if (j == i || other.bullet) return;
-        const Body& other_body = bodies[other.body];
-        const Real limit = std::min(slow, other_body.continuous_threshold * other_body.min_extent);
-        if (travel_relative_to(fast.sweep, body.extent, other.sweep, other.rotation0,
+        const Real limit = std::min(slow, other.slow);
+        if (travel_relative_to(fast.sweep, fast.extent, other.sweep, other.rotation0,
                                other.rotation1) <= limit &&
-            travel_relative_to(other.sweep, other_body.extent, fast.sweep, fast.rotation0,
+            travel_relative_to(other.sweep, other.extent, fast.sweep, fast.rotation0,
                                fast.rotation1) <= limit) {
           return;
         }
-        for (const std::uint32_t s : bodies[other.body].shapes) sweep_pair(fast, s, other.sweep);
+        for (const std::uint32_t s : bodies[other.body].shapes) sweep_with(s, other.sweep);
       };
       const auto first = std::lower_bound(continuous.fast_reach_x.begin(),
                                           continuous.fast_reach_x.end(), fast.box.lower.x());
@@ -519,20 +514,25 @@ void WorldState::solve_continuous() {
         if (box.overlaps(fast.box)) meet(continuous.fast_by_x[k]);
       }
       for (const std::uint32_t j : continuous.fast_wide) {
-        if (fast_bodies[j].box.overlaps(fast.box)) meet(j);
+        if (continuous.fast_body(j).box.overlaps(fast.box)) meet(j);
       }
     }
   });
 
   // Sensors see fast bodies along their sweeps.
   if (!sensors.empty()) {
-    for (FastBody& fast : fast_bodies) {
-      if (!fast.has_sweep) fast.set_sweep(solver_sweep(fast.solver_index));
+    for (const std::uint32_t si : fast_list) {
+      FastBody& fast = continuous.fast[si];
+      if (!fast.has_sweep) {
+        fast.sweep = solver_sweep(si);
+        fast.has_sweep = true;
+      }
     }
   }
   // Stopped bodies go back to where they first touched, keeping their velocity, and their
   // shapes' boxes with them.
-  for (FastBody& fast : fast_bodies) {
+  for (const std::uint32_t si : fast_list) {
+    const FastBody& fast = continuous.fast[si];
     if (fast.fraction >= 1) continue;
     ++continuous.hits;
     Body& b = bodies[fast.body];

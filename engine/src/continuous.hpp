@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <numbers>
 #include <span>
@@ -31,65 +32,63 @@ struct SweepEnds {
 };
 
 // A body that moved fast this step: its sweep over the step, the box around it, and the
-// fraction of the step it may keep (1 when nothing was in the way).
-struct FastBody {
+// fraction of the step it may keep. finish_body writes it whole while the body's record is at
+// hand: three cache lines.
+struct alignas(64) FastBody {
   std::uint32_t body = 0;
   std::uint32_t solver_index = 0;
+  Real fraction = 1;  // 1 when nothing was in the way
+  Real slow = 0;      // continuous_threshold * min_extent: what it may travel past others unswept
+  Real extent = 0;    // its body's
+  Aabb box;
   Sweep sweep;  // valid once has_sweep: found only for a body with something to meet
-  bool has_sweep = false;
-  // The sweep measured from its start (the frame each pair is swept in) and its ends.
-  Sweep local_sweep;
-  SweepEnds local_ends;
-  void set_sweep(const Sweep& world_sweep) {
-    sweep = world_sweep;
-    has_sweep = true;
-    local_sweep = world_sweep;
-    local_sweep.center0 = Vec2(0, 0);
-    local_sweep.center1 = world_sweep.center1 - world_sweep.center0;
-    local_ends = SweepEnds(local_sweep);
-  }
   // The sweep's start and end rotations, for fast bodies meeting each other (set with it then).
   Rotation rotation0{}, rotation1{};
-  Aabb box;
+  bool bullet = false;
   // Each shape's box over the step lies in its broadphase box: the body's contacts then hold
   // every static and kinematic shape the sweep can meet, and no query is needed.
   bool covered = false;
-  Real fraction = 1;
-  bool bullet = false;
+  bool has_sweep = false;
+};
+static_assert(sizeof(FastBody) == 192, "finish_body writes three lines of a FastBody");
+
+// A fast body's sweep measured from its start (the frame each of its pairs is swept in) and
+// its ends: found only for a body with a pair to sweep.
+struct LocalSweep {
+  Sweep sweep;
+  SweepEnds ends;
+  LocalSweep() = default;
+  explicit LocalSweep(const Sweep& world_sweep) : sweep(world_sweep) {
+    sweep.center0 = Vec2(0, 0);
+    sweep.center1 = world_sweep.center1 - world_sweep.center0;
+    ends = SweepEnds(sweep);
+  }
 };
 
 // Continuous collision's per-step lists: the fast bodies in body order, and per worker the
 // broadphase candidates of the body it is sweeping.
 struct ContinuousState {
-  // Per solver body, set by finish_body in parallel: whether it moved fast, and then its box
-  // over the step and whether its broadphase boxes cover it (FastBody's).
-  std::vector<std::uint8_t> fast_mark;
-  std::vector<Aabb> fast_box;
-  std::vector<std::uint8_t> fast_covered;
-  void prepare_marks(std::size_t solver_bodies) {
-    fast_mark.assign(solver_bodies, 0);
-    fast_box.resize(solver_bodies);
-    fast_covered.resize(solver_bodies);
-  }
-  void mark(std::size_t solver_index, const Aabb& swept, bool covered) {
-    fast_mark[solver_index] = 1;
-    fast_box[solver_index] = swept;
-    fast_covered[solver_index] = covered ? 1 : 0;
-  }
-  // The step's fast bodies: the first fast_count of `fast`, whose records are kept from step
-  // to step (only the fields a step starts from are set anew, not the whole record).
+  // Per solver body, set by finish_body in parallel: whether it moved fast, and its FastBody
+  // if it did (a record kept from step to step, valid only where fast_kind is not 0).
+  std::vector<std::uint8_t> fast_kind;
   std::vector<FastBody> fast;
-  std::size_t fast_count = 0;
-  std::span<FastBody> fast_bodies() { return {fast.data(), fast_count}; }
-  std::span<const FastBody> fast_bodies() const { return {fast.data(), fast_count}; }
-  // Indices into `fast` of the boxes of common width, by lower x, with the running largest
+  void prepare_marks(std::size_t solver_bodies) {
+    fast_kind.assign(solver_bodies, 0);
+    if (fast.size() < solver_bodies) fast.resize(solver_bodies);
+  }
+  // The step's fast bodies, by solver index (so in body order, as sensors meet them).
+  std::vector<std::uint32_t> fast_list;
+  FastBody& fast_body(std::size_t k) { return fast[fast_list[k]]; }
+  const FastBody& fast_body(std::size_t k) const { return fast[fast_list[k]]; }
+  // Places in fast_list of the boxes of common width, by lower x, with the running largest
   // upper x along them; and of the few far wider ones (a fast spinning bar), which would
   // stretch every scan, apart.
   std::vector<std::uint32_t> fast_by_x;
   std::vector<Aabb> fast_boxes_by_x;  // their boxes, in that order: a scan reads no FastBody
   std::vector<Real> fast_reach_x;
   std::vector<std::uint32_t> fast_wide;
-  std::vector<Real> widths;  // scratch
+  std::vector<Real> widths;   // scratch
+  std::vector<Real> lower_x;  // the fast bodies' boxes' lower x, side by side for the sort
   std::vector<std::vector<std::uint32_t>> candidates;
   std::size_t hits = 0;  // fast bodies stopped short this step
 };

@@ -68,7 +68,8 @@ void WorldState::update_sensors() {
       // Fast bodies are seen along their whole sweep: their boxes at the end of the step may
       // be past the sensor already.
       const Aabb box = compute_aabb(s.geometry, pose);
-      for (const detail::FastBody& fast : continuous.fast_bodies()) {
+      for (const std::uint32_t fast_index : continuous.fast_list) {
+        const detail::FastBody& fast = continuous.fast[fast_index];
         if (!fast.box.overlaps(box) || fast.body == s.body) continue;
         for (const std::uint32_t index : bodies[fast.body].shapes) {
           const Shape& visitor = shapes[index];

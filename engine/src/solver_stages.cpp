@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <numbers>
 
+#include "prefetch.hpp"
 #include "run_counts.hpp"
 #include "world_state.hpp"
 
@@ -30,29 +31,13 @@ Vec2 clamp_length(Vec2 v, Real limit) {
 
 using detail::Body;
 using detail::Contact;
+using detail::prefetch_bytes;
+using detail::prefetch_line;
 using detail::Shape;
 
 namespace {
 
 constexpr std::uint32_t kPrefetchAhead = 8;
-
-// Asks for the cache line at `p`. An asm statement on x86 rather than __builtin_prefetch: GCC
-// 12's side-effect analysis (IPA modref) takes a function or lambda made only of prefetch
-// builtins for one without effects and drops its calls.
-[[gnu::always_inline]] inline void prefetch_line(const void* p) {
-#if defined(__x86_64__) || defined(__i386__)
-  asm volatile("prefetcht0 %0" : : "m"(*static_cast<const char*>(p)));
-#else
-  __builtin_prefetch(p);
-#endif
-}
-
-// Asks for the cache lines of the `size` bytes at `p` (which need not start a line).
-[[gnu::always_inline]] inline void prefetch_bytes(const void* p, std::size_t size) {
-  const char* bytes = static_cast<const char*>(p);
-  for (std::size_t offset = 0; offset < size; offset += 64) prefetch_line(bytes + offset);
-  prefetch_line(bytes + size - 1);
-}
 
 // What the solver's set-up reads of a contact (contact.hpp).
 void prefetch_contact(const Contact& c) {
@@ -79,6 +64,13 @@ void prefetch_finish(const Body& b) {
 }
 
 }  // namespace
+
+// What finishing a body's step reads of its shapes (their geometry, box and proxy).
+void WorldState::prefetch_shapes(const Body& b) const {
+  for (const std::uint32_t s : b.shapes) {
+    prefetch_bytes(&shapes[s], offsetof(Shape, proxy) + sizeof(ProxyId));
+  }
+}
 
 void WorldState::prepare_contacts() {
   const Real h = dt / substeps;
@@ -406,15 +398,23 @@ void WorldState::solve() {
   if (def.enable_continuous) continuous.prepare_marks(solver_to_body.size());
   boxes_left.assign(solver_to_body.size(), 0);
   solver_turned.resize(step_joints.empty() ? 0 : solver_to_body.size());
-  tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 128,
-                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-                       for (std::uint32_t si = begin; si < end; ++si) {
-                         if (si + kPrefetchAhead < end) {
-                           prefetch_finish(bodies[solver_to_body[si + kPrefetchAhead]]);
-                         }
-                         finish_body(si);
-                       }
-                     });
+  tasks.parallel_for(
+      static_cast<std::uint32_t>(solver_to_body.size()), 128,
+      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+        for (std::uint32_t si = begin; si < end; ++si) {
+          // Each step's lines are asked for once the last step's are in.
+          if (si + kPrefetchAhead < end) {
+            prefetch_finish(bodies[solver_to_body[si + kPrefetchAhead]]);
+          }
+          if (si + kPrefetchAhead / 2 < end) {
+            prefetch_line(bodies[solver_to_body[si + kPrefetchAhead / 2]].shapes.data());
+          }
+          if (si + kPrefetchAhead / 4 < end) {
+            prefetch_shapes(bodies[solver_to_body[si + kPrefetchAhead / 4]]);
+          }
+          finish_body(si);
+        }
+      });
 }
 
 // Its pose and velocity back from the solver, its shapes' boxes at the new pose (the
@@ -455,13 +455,43 @@ void WorldState::finish_body(std::uint32_t solver_index) {
   } else {
     b.sleep_time += dt;
   }
-  if (fast) continuous.mark(solver_index, swept, has_proxies && boxes_left[solver_index] == 0);
+  if (fast) {
+    continuous.fast_kind[solver_index] = 1;
+    detail::FastBody& record = continuous.fast[solver_index];
+    record.body = solver_to_body[solver_index];
+    record.solver_index = solver_index;
+    record.fraction = 1;
+    record.slow = b.continuous_threshold * b.min_extent;
+    record.extent = b.extent;
+    record.box = swept;
+    record.bullet = b.bullet;
+    record.covered = has_proxies && boxes_left[solver_index] == 0;
+    // Fast bodies meet each other on both their sweeps: every sweep is needed then (else it
+    // waits until its body has something to meet, which most, in free flight, do not).
+    record.has_sweep = def.continuous_fast_pairs;
+    if (record.has_sweep) {
+      record.sweep = solver_sweep(solver_index);
+      record.rotation0 = Rotation::from_angle(record.sweep.angle0);
+      record.rotation1 = Rotation::from_angle(record.sweep.angle1);
+    }
+  }
 }
 
 void WorldState::finish_step() {
   // The boxes that left their broadphase boxes in finish_body (or as continuous collision
   // stopped their body short), to the broadphase in order; the others it would keep.
-  for (std::size_t k = 0; k < solver_to_body.size(); ++k) {
+  const std::size_t count = solver_to_body.size();
+  for (std::size_t k = 0; k < count; ++k) {
+    // As finishing the bodies asks for their records, shape lists and shapes.
+    if (k + kPrefetchAhead < count && boxes_left[k + kPrefetchAhead] != 0) {
+      prefetch_line(&bodies[solver_to_body[k + kPrefetchAhead]].shapes);
+    }
+    if (k + kPrefetchAhead / 2 < count && boxes_left[k + kPrefetchAhead / 2] != 0) {
+      prefetch_line(bodies[solver_to_body[k + kPrefetchAhead / 2]].shapes.data());
+    }
+    if (k + kPrefetchAhead / 4 < count && boxes_left[k + kPrefetchAhead / 4] != 0) {
+      prefetch_shapes(bodies[solver_to_body[k + kPrefetchAhead / 4]]);
+    }
     if (boxes_left[k] == 0) continue;
     for (std::uint32_t s : bodies[solver_to_body[k]].shapes) {
       if (shapes[s].proxy != null_proxy) broadphase.move_proxy(shapes[s].proxy, shapes[s].aabb);
@@ -485,9 +515,15 @@ void WorldState::finish_step() {
     move_events.push_back({body_id(i), b.pose(), true, b.user_data});
   }
   if (!fell_asleep.empty()) {
-    std::sort(
-        move_events.begin(), move_events.end(),
-        [](const BodyMoveEvent& x, const BodyMoveEvent& y) { return x.body.index < y.body.index; });
+    // The simulated bodies' events are in slot order already: the few that fell asleep are
+    // sorted and merged in, and an advance's earlier steps keep theirs apart.
+    const auto by_slot = [](const BodyMoveEvent& x, const BodyMoveEvent& y) {
+      return x.body.index < y.body.index;
+    };
+    const auto step_begin = move_events.begin() + static_cast<std::ptrdiff_t>(first_event);
+    const auto asleep_begin = step_begin + static_cast<std::ptrdiff_t>(solver_to_body.size());
+    std::sort(asleep_begin, move_events.end(), by_slot);
+    std::inplace_merge(step_begin, asleep_begin, move_events.end(), by_slot);
   }
   counters.broadphase_pairs = broadphase.pairs().size();
   counters.contacts = contacts.size();

@@ -250,7 +250,7 @@ void World::run_step(bool clear_events, Real time_step, int substeps) {
   if (w.def.enable_continuous) {
     w.solve_continuous();
   } else {
-    w.continuous.fast_count = 0;
+    w.continuous.fast_list.clear();
     w.counters.fast_bodies = w.counters.continuous_hits = 0;
   }
   const auto t6 = Clock::now();

@@ -257,10 +257,13 @@ struct WorldState {
   void solve_continuous();
   // From finish_body: whether the step moved the body fast (continuous collision sweeps it).
   bool moved_fast(std::uint32_t solver_index) const;
+  void prefetch_shapes(const detail::Body& b) const;
+  void prefetch_pair(const detail::Contact& c) const;
+  void prefetch_hulls(const detail::Contact& c) const;
   Sweep solver_sweep(std::uint32_t solver_index) const;
   Sweep body_sweep(std::uint32_t body) const;
-  void sweep_pair(detail::FastBody& fast, std::uint32_t other_shape,
-                  const Sweep& other_sweep) const;
+  void sweep_pair(detail::FastBody& fast, const detail::LocalSweep& local,
+                  std::uint32_t other_shape, const Sweep& other_sweep) const;
 };
 
 }  // namespace mink

@@ -133,6 +133,8 @@ class SweepAndPrune final : public Broadphase {
   bool sink(std::size_t i, std::size_t& shifts);
   void sort_changed();
   void rebuild();
+  std::size_t fixed_bucket(Real x) const;
+  std::size_t first_fixed_not_below(Real x) const;
   /// Gathers fixed_entries_ from entries_.
   void refresh_fixed();
   /// Also refreshes band_begin_, which every change of entries_ invalidates.
@@ -156,6 +158,10 @@ class SweepAndPrune final : public Broadphase {
   /// of the bands would step over one by one. Stale (and not used) until the first update
   /// after a fixed proxy changed or the array was laid out anew.
   std::vector<Entry> fixed_entries_;
+  std::vector<Real> fixed_lo0_;  ///< their lower bounds, side by side for the search
+  /// Where each of as many even buckets of lower bounds as entries starts in fixed_entries_.
+  std::vector<std::uint32_t> fixed_bucket_start_;
+  Real fixed_bucket_origin_ = 0, fixed_bucket_scale_ = 0;
   Real fixed_reach0_ = 0;
   bool fixed_stale_ = true;
 

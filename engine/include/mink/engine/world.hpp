@@ -376,7 +376,8 @@ class World {
   std::span<const SensorEndEvent> sensor_end_events() const noexcept;
   /// @brief Joints whose force or torque exceeded their break thresholds, in joint slot order.
   std::span<const JointBreakEvent> joint_break_events() const noexcept;
-  /// @brief Bodies that moved (were simulated), in body slot order.
+  /// @brief Bodies that moved (were simulated) or fell asleep, in body slot order (an
+  /// advance of several steps: step by step, each in body slot order).
   std::span<const BodyMoveEvent> body_move_events() const noexcept;
   /// @brief Bodies the step stopped because its solve diverged on them or on bodies joined to
   /// them (BodyStoppedEvent), in body slot order; empty when every solve held.

@@ -55,6 +55,8 @@ class PreparedHull {
   const Real* ys() const noexcept { return reals() + padded_size_; }
   /// @brief Length of xs() and ys(), padding included.
   std::size_t padded_size() const noexcept { return padded_size_; }
+  /// @brief The one block all the arrays above lie in, for a caller asking for it ahead.
+  std::span<const Vec2> storage() const noexcept { return block_; }
 
  private:
   // The arrays above in one block: vertices, normals, then xs and ys (first, so that they
