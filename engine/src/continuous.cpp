@@ -64,7 +64,7 @@ Sweep WorldState::body_sweep(std::uint32_t body) const {
 namespace {
 
 // Fast bodies' records asked for this many ahead of the one being swept.
-constexpr std::uint32_t kPrefetchAhead = 4;
+constexpr std::uint32_t kFastBodyAhead = 4;
 // A fast body's box this many times wider than the middle one's is scanned apart.
 constexpr Real kWideFactor = 8;
 // What a body may close on a chain segment in a step, as a share of its thinnest half-width,
@@ -425,8 +425,8 @@ void WorldState::solve_continuous() {
     std::vector<ProxyId> proxies;
     detail::LocalSweep local;
     for (std::uint32_t i = begin; i < end; ++i) {
-      if (i + kPrefetchAhead < end) {
-        detail::prefetch_bytes(&continuous.fast_body(i + kPrefetchAhead), sizeof(FastBody));
+      if (i + kFastBodyAhead < end) {
+        detail::prefetch_bytes(&continuous.fast_body(i + kFastBodyAhead), sizeof(FastBody));
       }
       FastBody& fast = continuous.fast_body(i);
       // The sweep from the body's start, found for its first pair swept.
