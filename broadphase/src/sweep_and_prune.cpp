@@ -678,8 +678,9 @@ void SweepAndPrune::query_fixed(const Aabb& box, std::vector<ProxyId>& out) cons
     for (; it != fixed_entries_.end() && it->lo0 <= q.hi0; ++it) {
       // overlap() without its branches (its first test is the loop's): most entries a scan
       // meets lie beside q on the other axis, at no pattern a branch could learn.
-      const bool hit = (q.lo0 <= it->hi0) & (it->lo1 <= q.hi1) & (q.lo1 <= it->hi1);
-      if (hit) found(*it);
+      const int hit = static_cast<int>(q.lo0 <= it->hi0) & static_cast<int>(it->lo1 <= q.hi1) &
+                      static_cast<int>(q.lo1 <= it->hi1);
+      if (hit != 0) found(*it);
     }
     for (const Entry& e : oversized_) {
       if (overlap(e, q)) found(e);
