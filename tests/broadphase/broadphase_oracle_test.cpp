@@ -388,6 +388,53 @@ TEST(SweepAndPruneOracle, ClustersThatDriftApart) {
   expect_pairs_over(layout, 61, 64, 50);
 }
 
+// query_fixed starts its scan from buckets of the fixed entries' lower bounds: fixed sets of
+// one entry, of equal lower bounds, of clustered ones with a far outlier and of a ring, queried
+// below, above, between and across them, against the brute force.
+TEST(SweepAndPruneOracle, FixedQueriesOverEqualClusteredAndRingBounds) {
+  std::mt19937_64 random(19);
+  const std::vector<std::function<Aabb(int)>> layouts = {
+      [](int) { return box_at(Vec2(3, 1), Vec2(0.5, 0.5)); },
+      [](int i) { return box_at(Vec2(2, i * 0.7), Vec2(0.25, 0.25)); },
+      [](int i) {
+        return i == 0 ? box_at(Vec2(1e4, 0), Vec2(1, 1))
+                      : box_at(Vec2(0.001 * i, 0.3 * i), Vec2(0.1, 0.1));
+      },
+      [](int i) {
+        const double angle = i * 2 * 3.14159265358979 / 60;
+        return box_at(Vec2(40 * std::cos(angle), 40 * std::sin(angle)), Vec2(1.2, 1.2));
+      },
+  };
+  for (std::size_t l = 0; l < layouts.size(); ++l) {
+    mink::SweepAndPrune fast(0.1);
+    mink::BruteForceBroadphase slow(0.1);
+    mink::PairEvents events;
+    const int count = l == 0 ? 1 : 60;
+    for (int i = 0; i < count; ++i) {
+      fast.create_proxy(layouts[l](i), ProxyKind::static_body, static_cast<std::uint64_t>(i));
+      slow.create_proxy(layouts[l](i), ProxyKind::static_body, static_cast<std::uint64_t>(i));
+    }
+    fast.create_proxy(box_at(Vec2(0, 0), Vec2(0.5, 0.5)), ProxyKind::moving, 1000);
+    slow.create_proxy(box_at(Vec2(0, 0), Vec2(0.5, 0.5)), ProxyKind::moving, 1000);
+    fast.update_pairs(events);
+    slow.update_pairs(events);
+    for (int q = 0; q < 2000; ++q) {
+      const Vec2 center(uniform(random, -60, 60), uniform(random, -60, 60));
+      const Vec2 half(uniform(random, 0, 3), uniform(random, 0, 3));
+      const Aabb box = q % 100 == 0 ? box_at(Vec2(0, 0), Vec2(2e4, 2e4)) : box_at(center, half);
+      std::vector<mink::ProxyId> fast_out, slow_out;
+      fast.query_fixed(box, fast_out);
+      slow.query_fixed(box, slow_out);
+      std::vector<std::uint64_t> fast_named, slow_named;
+      for (const auto id : fast_out) fast_named.push_back(fast.user_data(id));
+      for (const auto id : slow_out) slow_named.push_back(slow.user_data(id));
+      std::sort(fast_named.begin(), fast_named.end());
+      std::sort(slow_named.begin(), slow_named.end());
+      ASSERT_EQ(fast_named, slow_named) << "layout " << l << ", query " << q;
+    }
+  }
+}
+
 TEST(SweepAndPruneOracle, RebuildsAndChoosesTheWideAxis) {
   mink::SweepAndPrune broadphase(0.1);
   mink::PairEvents events;
