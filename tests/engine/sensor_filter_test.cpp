@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <span>
 #include <vector>
 
 #include "mink/engine/stale_id_error.hpp"
@@ -193,6 +194,33 @@ TEST(Events, MoveEventsListTheBodiesThatMovedAndTheOnesThatFellAsleep) {
   EXPECT_FALSE(world.is_awake(box));
   world.step();
   for (const BodyMoveEvent& e : world.body_move_events()) EXPECT_NE(e.body, box);
+}
+
+// Resting boxes fall asleep at slots between falling balls, in advances of three steps: each
+// step's events are one run in slot order, the sleepers' merged into the movers'.
+TEST(Events, MoveEventsOfSleepersMergeInSlotOrderStepByStep) {
+  World world;
+  test::add_ground(world);
+  std::vector<BodyId> boxes;
+  for (int i = 0; i < 6; ++i) {
+    boxes.push_back(test::add_box(world, {-10.0 + 4 * i, 0.5}));
+    add_ball(world, {-8.0 + 4 * i, 200});  // the last slot: every step ends with a ball
+  }
+  int advances_with_sleepers = 0;
+  for (int i = 0; i < 70; ++i) {
+    const AdvanceResult result = world.advance(3 * WorldDef{}.time_step);
+    const std::span<const BodyMoveEvent> events = world.body_move_events();
+    int runs = events.empty() ? 0 : 1;
+    bool sleeper_between_movers = false;
+    for (std::size_t k = 1; k < events.size(); ++k) {
+      if (!(events[k - 1].body.index < events[k].body.index)) ++runs;
+      if (events[k - 1].fell_asleep && !events[k].fell_asleep) sleeper_between_movers = true;
+    }
+    ASSERT_EQ(runs, result.steps) << "advance " << i;
+    if (sleeper_between_movers) ++advances_with_sleepers;
+  }
+  EXPECT_GT(advances_with_sleepers, 0);
+  for (const BodyId box : boxes) EXPECT_FALSE(world.is_awake(box));
 }
 
 TEST(Ids, AnIdFromAnotherWorldIsRefused) {
