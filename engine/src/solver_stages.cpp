@@ -63,6 +63,11 @@ void prefetch_finish(const Body& b) {
   prefetch_bytes(&b, offsetof(Body, shapes) + sizeof(b.shapes));
 }
 
+// A body's list of shapes (none for a body without shapes, whose list has no storage).
+void prefetch_shape_list(const Body& b) {
+  if (!b.shapes.empty()) prefetch_line(b.shapes.data());
+}
+
 }  // namespace
 
 // What finishing a body's step reads of its shapes (their geometry, box and proxy).
@@ -398,23 +403,22 @@ void WorldState::solve() {
   if (def.enable_continuous) continuous.prepare_marks(solver_to_body.size());
   boxes_left.assign(solver_to_body.size(), 0);
   solver_turned.resize(step_joints.empty() ? 0 : solver_to_body.size());
-  tasks.parallel_for(
-      static_cast<std::uint32_t>(solver_to_body.size()), 128,
-      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-        for (std::uint32_t si = begin; si < end; ++si) {
-          // Each step's lines are asked for once the last step's are in.
-          if (si + kPrefetchAhead < end) {
-            prefetch_finish(bodies[solver_to_body[si + kPrefetchAhead]]);
-          }
-          if (si + kPrefetchAhead / 2 < end) {
-            prefetch_line(bodies[solver_to_body[si + kPrefetchAhead / 2]].shapes.data());
-          }
-          if (si + kPrefetchAhead / 4 < end) {
-            prefetch_shapes(bodies[solver_to_body[si + kPrefetchAhead / 4]]);
-          }
-          finish_body(si);
-        }
-      });
+  tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 128,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       for (std::uint32_t si = begin; si < end; ++si) {
+                         // Each step's lines are asked for once the last step's are in.
+                         if (si + kPrefetchAhead < end) {
+                           prefetch_finish(bodies[solver_to_body[si + kPrefetchAhead]]);
+                         }
+                         if (si + kPrefetchAhead / 2 < end) {
+                           prefetch_shape_list(bodies[solver_to_body[si + kPrefetchAhead / 2]]);
+                         }
+                         if (si + kPrefetchAhead / 4 < end) {
+                           prefetch_shapes(bodies[solver_to_body[si + kPrefetchAhead / 4]]);
+                         }
+                         finish_body(si);
+                       }
+                     });
 }
 
 // Its pose and velocity back from the solver, its shapes' boxes at the new pose (the
@@ -487,7 +491,7 @@ void WorldState::finish_step() {
       prefetch_line(&bodies[solver_to_body[k + kPrefetchAhead]].shapes);
     }
     if (k + kPrefetchAhead / 2 < count && boxes_left[k + kPrefetchAhead / 2] != 0) {
-      prefetch_line(bodies[solver_to_body[k + kPrefetchAhead / 2]].shapes.data());
+      prefetch_shape_list(bodies[solver_to_body[k + kPrefetchAhead / 2]]);
     }
     if (k + kPrefetchAhead / 4 < count && boxes_left[k + kPrefetchAhead / 4] != 0) {
       prefetch_shapes(bodies[solver_to_body[k + kPrefetchAhead / 4]]);
