@@ -367,14 +367,38 @@ bool WorldState::moved_fast(std::uint32_t si) const {
   return b.bullet || moved > b.continuous_threshold * b.min_extent;
 }
 
+// From finish_body, while the body's records are at hand: a fast body's record, with its box
+// over the step and whether its broadphase boxes cover it.
+void WorldState::record_fast_body(std::uint32_t solver_index, const Aabb& swept, bool covered) {
+  const Body& b = bodies[solver_to_body[solver_index]];
+  continuous.is_fast[solver_index] = 1;
+  FastBody& record = continuous.fast[solver_index];
+  record.body = solver_to_body[solver_index];
+  record.solver_index = solver_index;
+  record.fraction = 1;
+  record.slow = b.continuous_threshold * b.min_extent;
+  record.extent = b.extent;
+  record.box = swept;
+  record.bullet = b.bullet;
+  record.covered = covered;
+  // Fast bodies meet each other on both their sweeps: every sweep is needed then (else it
+  // waits until its body has something to meet, which most, in free flight, do not).
+  record.has_sweep = def.continuous_fast_pairs;
+  if (record.has_sweep) {
+    record.sweep = solver_sweep(solver_index);
+    record.rotation0 = Rotation::from_angle(record.sweep.angle0);
+    record.rotation1 = Rotation::from_angle(record.sweep.angle1);
+  }
+}
+
 void WorldState::solve_continuous() {
   continuous.hits = 0;
   // The marked bodies, in body order (solver bodies are), so sensors meet them in a fixed
   // order.
   std::vector<std::uint32_t>& fast_list = continuous.fast_list;
   fast_list.clear();
-  for (std::uint32_t si = 0; si < continuous.fast_kind.size(); ++si) {
-    if (continuous.fast_kind[si] != 0) fast_list.push_back(si);
+  for (std::uint32_t si = 0; si < continuous.is_fast.size(); ++si) {
+    if (continuous.is_fast[si] != 0) fast_list.push_back(si);
   }
   counters.fast_bodies = fast_list.size();
   if (fast_list.empty()) return;
@@ -403,22 +427,21 @@ void WorldState::solve_continuous() {
       (box.upper.x() - box.lower.x() > wide ? continuous.fast_wide : continuous.fast_by_x)
           .push_back(i);
     }
-  }
-  const std::vector<Real>& lower_x = continuous.lower_x;
-  std::sort(continuous.fast_by_x.begin(), continuous.fast_by_x.end(),
-            [&](std::uint32_t x, std::uint32_t y) {
-              return lower_x[x] != lower_x[y] ? lower_x[x] < lower_x[y] : x < y;
-            });
-  // Where a body's scan may start: no box before the first place whose running largest upper
-  // x reaches the body's lower x can overlap it.
-  continuous.fast_boxes_by_x.resize(continuous.fast_by_x.size());
-  continuous.fast_reach_x.resize(continuous.fast_by_x.size());
-  Real reach = -std::numeric_limits<Real>::infinity();
-  for (std::size_t k = 0; k < continuous.fast_by_x.size(); ++k) {
-    const Aabb& box = continuous.fast_body(continuous.fast_by_x[k]).box;
-    continuous.fast_boxes_by_x[k] = box;
-    reach = std::max(reach, box.upper.x());
-    continuous.fast_reach_x[k] = reach;
+    std::sort(continuous.fast_by_x.begin(), continuous.fast_by_x.end(),
+              [&](std::uint32_t x, std::uint32_t y) {
+                return lower_x[x] != lower_x[y] ? lower_x[x] < lower_x[y] : x < y;
+              });
+    // Where a body's scan may start: no box before the first place whose running largest
+    // upper x reaches the body's lower x can overlap it.
+    continuous.fast_boxes_by_x.resize(continuous.fast_by_x.size());
+    continuous.fast_reach_x.resize(continuous.fast_by_x.size());
+    Real reach = -std::numeric_limits<Real>::infinity();
+    for (std::size_t k = 0; k < continuous.fast_by_x.size(); ++k) {
+      const Aabb& box = continuous.fast_body(continuous.fast_by_x[k]).box;
+      continuous.fast_boxes_by_x[k] = box;
+      reach = std::max(reach, box.upper.x());
+      continuous.fast_reach_x[k] = reach;
+    }
   }
 
   tasks.parallel_for(count, 4, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {

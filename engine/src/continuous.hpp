@@ -69,11 +69,11 @@ struct LocalSweep {
 // broadphase candidates of the body it is sweeping.
 struct ContinuousState {
   // Per solver body, set by finish_body in parallel: whether it moved fast, and its FastBody
-  // if it did (a record kept from step to step, valid only where fast_kind is not 0).
-  std::vector<std::uint8_t> fast_kind;
+  // if it did (a record kept from step to step, valid only where is_fast is not 0).
+  std::vector<std::uint8_t> is_fast;
   std::vector<FastBody> fast;
   void prepare_marks(std::size_t solver_bodies) {
-    fast_kind.assign(solver_bodies, 0);
+    is_fast.assign(solver_bodies, 0);
     if (fast.size() < solver_bodies) fast.resize(solver_bodies);
   }
   // The step's fast bodies, by solver index (so in body order, as sensors meet them).

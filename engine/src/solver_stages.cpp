@@ -70,10 +70,23 @@ void prefetch_shape_list(const Body& b) {
 
 }  // namespace
 
-// What finishing a body's step reads of its shapes (their geometry, box and proxy).
-void WorldState::prefetch_shapes(const Body& b) const {
-  for (const std::uint32_t s : b.shapes) {
-    prefetch_bytes(&shapes[s], offsetof(Shape, proxy) + sizeof(ProxyId));
+// What finishing the step of the body at solver index k + kPrefetchAhead reads of its record,
+// then half as far ahead its shape list, a quarter as far its shapes (geometry, box, proxy):
+// each stage's lines are asked for once the last stage's are in. `only`, if given, picks the
+// bodies (those with a nonzero entry).
+void WorldState::prefetch_finish_ahead(std::size_t k, std::size_t end,
+                                       const std::uint8_t* only) const {
+  const auto ahead = [&](std::size_t distance) -> const Body* {
+    const std::size_t at = k + distance;
+    if (at >= end || (only != nullptr && only[at] == 0)) return nullptr;
+    return &bodies[solver_to_body[at]];
+  };
+  if (const Body* b = ahead(kPrefetchAhead)) prefetch_finish(*b);
+  if (const Body* b = ahead(kPrefetchAhead / 2)) prefetch_shape_list(*b);
+  if (const Body* b = ahead(kPrefetchAhead / 4)) {
+    for (const std::uint32_t s : b->shapes) {
+      prefetch_bytes(&shapes[s], offsetof(Shape, proxy) + sizeof(ProxyId));
+    }
   }
 }
 
@@ -406,16 +419,7 @@ void WorldState::solve() {
   tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 128,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
                        for (std::uint32_t si = begin; si < end; ++si) {
-                         // Each step's lines are asked for once the last step's are in.
-                         if (si + kPrefetchAhead < end) {
-                           prefetch_finish(bodies[solver_to_body[si + kPrefetchAhead]]);
-                         }
-                         if (si + kPrefetchAhead / 2 < end) {
-                           prefetch_shape_list(bodies[solver_to_body[si + kPrefetchAhead / 2]]);
-                         }
-                         if (si + kPrefetchAhead / 4 < end) {
-                           prefetch_shapes(bodies[solver_to_body[si + kPrefetchAhead / 4]]);
-                         }
+                         prefetch_finish_ahead(si, end, nullptr);
                          finish_body(si);
                        }
                      });
@@ -459,26 +463,7 @@ void WorldState::finish_body(std::uint32_t solver_index) {
   } else {
     b.sleep_time += dt;
   }
-  if (fast) {
-    continuous.fast_kind[solver_index] = 1;
-    detail::FastBody& record = continuous.fast[solver_index];
-    record.body = solver_to_body[solver_index];
-    record.solver_index = solver_index;
-    record.fraction = 1;
-    record.slow = b.continuous_threshold * b.min_extent;
-    record.extent = b.extent;
-    record.box = swept;
-    record.bullet = b.bullet;
-    record.covered = has_proxies && boxes_left[solver_index] == 0;
-    // Fast bodies meet each other on both their sweeps: every sweep is needed then (else it
-    // waits until its body has something to meet, which most, in free flight, do not).
-    record.has_sweep = def.continuous_fast_pairs;
-    if (record.has_sweep) {
-      record.sweep = solver_sweep(solver_index);
-      record.rotation0 = Rotation::from_angle(record.sweep.angle0);
-      record.rotation1 = Rotation::from_angle(record.sweep.angle1);
-    }
-  }
+  if (fast) record_fast_body(solver_index, swept, has_proxies && boxes_left[solver_index] == 0);
 }
 
 void WorldState::finish_step() {
@@ -486,16 +471,7 @@ void WorldState::finish_step() {
   // stopped their body short), to the broadphase in order; the others it would keep.
   const std::size_t count = solver_to_body.size();
   for (std::size_t k = 0; k < count; ++k) {
-    // As finishing the bodies asks for their records, shape lists and shapes.
-    if (k + kPrefetchAhead < count && boxes_left[k + kPrefetchAhead] != 0) {
-      prefetch_line(&bodies[solver_to_body[k + kPrefetchAhead]].shapes);
-    }
-    if (k + kPrefetchAhead / 2 < count && boxes_left[k + kPrefetchAhead / 2] != 0) {
-      prefetch_shape_list(bodies[solver_to_body[k + kPrefetchAhead / 2]]);
-    }
-    if (k + kPrefetchAhead / 4 < count && boxes_left[k + kPrefetchAhead / 4] != 0) {
-      prefetch_shapes(bodies[solver_to_body[k + kPrefetchAhead / 4]]);
-    }
+    prefetch_finish_ahead(k, count, boxes_left.data());
     if (boxes_left[k] == 0) continue;
     for (std::uint32_t s : bodies[solver_to_body[k]].shapes) {
       if (shapes[s].proxy != null_proxy) broadphase.move_proxy(shapes[s].proxy, shapes[s].aabb);

@@ -257,7 +257,8 @@ struct WorldState {
   void solve_continuous();
   // From finish_body: whether the step moved the body fast (continuous collision sweeps it).
   bool moved_fast(std::uint32_t solver_index) const;
-  void prefetch_shapes(const detail::Body& b) const;
+  void prefetch_finish_ahead(std::size_t k, std::size_t end, const std::uint8_t* only) const;
+  void record_fast_body(std::uint32_t solver_index, const Aabb& swept, bool covered);
   void prefetch_pair(const detail::Contact& c) const;
   void prefetch_hulls(const detail::Contact& c) const;
   Sweep solver_sweep(std::uint32_t solver_index) const;
