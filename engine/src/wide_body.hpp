@@ -115,6 +115,9 @@ MINK_WIDE_INLINE void scatter_where(SolverBody* bodies, const std::int32_t* inde
   if constexpr (kWideLanes == 8) {
     Wide m[8] = {w.vx, w.vy, w.w, w.turn, w.dpx, w.dpy, w.qc, w.qs};
     transpose8(m);
+    // Unrolled, so each row is stored straight from its register: as a loop, GCC wrote the
+    // rows to the stack and copied them out again in halves.
+#pragma GCC unroll 8
     for (int lane = 0; lane < 8; ++lane) {
       if (!written(lane)) continue;
       __builtin_memcpy(static_cast<void*>(&bodies[index[lane]]), &m[lane], sizeof(SolverBody));
