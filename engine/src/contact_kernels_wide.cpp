@@ -30,15 +30,21 @@ __attribute__((always_inline)) inline void solve_wide_impl(
       b.vy += mb * py;
       b.w += ib * (bx * py - by * px);
     };
-    Wide bxs[2], bys[2];
+    // Both points' separations first: positions do not change while solving, and the
+    // position fields then need no register through the impulses.
+    Wide bxs[2], bys[2], separations[2];
     for (int j = 0; j < 2; ++j) {
-      WideConstraint::Point& p = c->points[j];
+      const WideConstraint::Point& p = c->points[j];
       const Wide bx = p.ax + c->dx, by = p.ay + c->dy;
       bxs[j] = bx;
       bys[j] = by;
       const Wide prax = a.qc * p.ax - a.qs * p.ay, pray = a.qs * p.ax + a.qc * p.ay;
       const Wide prbx = b.qc * bx - b.qs * by, prby = b.qs * bx + b.qc * by;
-      const Wide s = (dpx + prbx - prax) * nx + (dpy + prby - pray) * ny + p.base_separation;
+      separations[j] = (dpx + prbx - prax) * nx + (dpy + prby - pray) * ny + p.base_separation;
+    }
+    for (int j = 0; j < 2; ++j) {
+      WideConstraint::Point& p = c->points[j];
+      const Wide bx = bxs[j], by = bys[j], s = separations[j];
       const auto speculative = s > zero;
       Wide bias = speculative ? s * inv_h : zero;
       Wide mass_scale = one, impulse_scale = zero;

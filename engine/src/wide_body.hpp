@@ -5,6 +5,8 @@
 // only (contact_kernels_wide.cpp, pin_rows_wide.cpp), each compiled for AVX2 and for baseline
 // x86-64 and picked at load time; the helpers are always inlined into those clones.
 
+#include <cstddef>
+
 #include "contact_kernels.hpp"
 
 // The wide helpers pass vectors by value between internal functions only; the ABI note GCC
@@ -106,21 +108,33 @@ MINK_WIDE_INLINE WideBody gather(const SolverBody* bodies, const std::int32_t* i
 // Only velocities change while solving, and only those of bodies the solver can move: a
 // kinematic body or the still body (no inverse mass or inertia) may sit in several
 // constraints of a colour, which other threads solve at the same time, so it is never
-// written. A movable body is in one lane of a colour only, so its whole record may be
-// rewritten (the fields besides the velocities go back unchanged). `written(lane)` says which
-// lanes go back.
+// written. A movable body is in one lane of a colour only. The row's first half (velocities
+// and the turn, unchanged) goes back whole: transposing four fields rather than eight takes a
+// third of the shuffles, and the position fields need not stay in registers until the end.
+// `written(lane)` says which lanes go back.
 template <typename Written>
 MINK_WIDE_INLINE void scatter_where(SolverBody* bodies, const std::int32_t* index,
                                     const WideBody& w, Written written) {
+  static_assert(offsetof(SolverBody, vx) == 0 && offsetof(SolverBody, turn) == 12);
   if constexpr (kWideLanes == 8) {
-    Wide m[8] = {w.vx, w.vy, w.w, w.turn, w.dpx, w.dpy, w.qc, w.qs};
-    transpose8(m);
-    // Unrolled, so each row is stored straight from its register: as a loop, GCC wrote the
-    // rows to the stack and copied them out again in halves.
+    typedef SolverReal Half __attribute__((vector_size(16)));
+    // Each register holds the rows of lanes k (low half) and k + 4 (high half).
+    const Wide t0 = MINK_SHUFFLE2(w.vx, w.vy, 0, 8, 1, 9, 4, 12, 5, 13);
+    const Wide t1 = MINK_SHUFFLE2(w.vx, w.vy, 2, 10, 3, 11, 6, 14, 7, 15);
+    const Wide t2 = MINK_SHUFFLE2(w.w, w.turn, 0, 8, 1, 9, 4, 12, 5, 13);
+    const Wide t3 = MINK_SHUFFLE2(w.w, w.turn, 2, 10, 3, 11, 6, 14, 7, 15);
+    const Wide rows[4] = {MINK_SHUFFLE2(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13),
+                          MINK_SHUFFLE2(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15),
+                          MINK_SHUFFLE2(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13),
+                          MINK_SHUFFLE2(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15)};
+    // Unrolled, so each half is stored straight from its register.
 #pragma GCC unroll 8
     for (int lane = 0; lane < 8; ++lane) {
       if (!written(lane)) continue;
-      __builtin_memcpy(static_cast<void*>(&bodies[index[lane]]), &m[lane], sizeof(SolverBody));
+      const Wide& row = rows[lane % 4];
+      const Half half = lane < 4 ? __builtin_shufflevector(row, row, 0, 1, 2, 3)
+                                 : __builtin_shufflevector(row, row, 4, 5, 6, 7);
+      __builtin_memcpy(static_cast<void*>(&bodies[index[lane]]), &half, sizeof half);
     }
   } else {
     for (int lane = 0; lane < kWideLanes; ++lane) {
