@@ -123,8 +123,8 @@ MINK_WIDE_KERNEL void finish_points_wide(WideConstraint& w, std::uint32_t two_po
 MINK_WIDE_KERNEL void warm_start_wide(SolverBody* bodies, WideConstraint* begin,
                                       WideConstraint* end) {
   for (WideConstraint* c = begin; c != end; ++c) {
-    WideBody a = gather(bodies, c->body_a);
-    WideBody b = gather(bodies, c->body_b);
+    WideBody a = gather_velocities(bodies, c->body_a);
+    WideBody b = gather_velocities(bodies, c->body_b);
     const Wide tx = c->ny, ty = -c->nx;
     for (int j = 0; j < 2; ++j) {
       const WideConstraint::Point& p = c->points[j];

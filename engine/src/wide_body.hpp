@@ -82,6 +82,20 @@ MINK_WIDE_INLINE void transpose8(Wide (&m)[8]) {
   }
 }
 
+// Within each 128-bit half, the 4 x 4 transpose of four registers: registers of one field
+// each become registers holding a row of lane k in the low half and of lane k + 4 in the
+// high half, and back (it is its own inverse).
+MINK_WIDE_INLINE void transpose4_halves(Wide (&m)[4]) {
+  const Wide t0 = MINK_SHUFFLE2(m[0], m[1], 0, 8, 1, 9, 4, 12, 5, 13);
+  const Wide t1 = MINK_SHUFFLE2(m[0], m[1], 2, 10, 3, 11, 6, 14, 7, 15);
+  const Wide t2 = MINK_SHUFFLE2(m[2], m[3], 0, 8, 1, 9, 4, 12, 5, 13);
+  const Wide t3 = MINK_SHUFFLE2(m[2], m[3], 2, 10, 3, 11, 6, 14, 7, 15);
+  m[0] = MINK_SHUFFLE2(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13);
+  m[1] = MINK_SHUFFLE2(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15);
+  m[2] = MINK_SHUFFLE2(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13);
+  m[3] = MINK_SHUFFLE2(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
+}
+
 MINK_WIDE_INLINE WideBody gather(const SolverBody* bodies, const std::int32_t* index) {
   WideBody w;
   if constexpr (kWideLanes == 8) {
@@ -105,6 +119,38 @@ MINK_WIDE_INLINE WideBody gather(const SolverBody* bodies, const std::int32_t* i
   return w;
 }
 
+// The rows' first halves only (velocities and turn; the other fields zero), for kernels that
+// read no position: half the loads, a third of the shuffles.
+MINK_WIDE_INLINE WideBody gather_velocities(const SolverBody* bodies, const std::int32_t* index) {
+  WideBody w{};
+  if constexpr (kWideLanes == 8) {
+    typedef SolverReal Half __attribute__((vector_size(16)));
+    Half halves[8];
+    for (int lane = 0; lane < 8; ++lane) {
+      __builtin_memcpy(&halves[lane], &bodies[index[lane]], sizeof(Half));
+    }
+    // Lanes k and k + 4 side by side, then the transpose within each half.
+    Wide m[4];
+    for (int k = 0; k < 4; ++k) {
+      m[k] = __builtin_shufflevector(halves[k], halves[k + 4], 0, 1, 2, 3, 4, 5, 6, 7);
+    }
+    transpose4_halves(m);
+    w.vx = m[0];
+    w.vy = m[1];
+    w.w = m[2];
+    w.turn = m[3];
+  } else {
+    for (int lane = 0; lane < kWideLanes; ++lane) {
+      const SolverBody& b = bodies[index[lane]];
+      w.vx[lane] = b.vx;
+      w.vy[lane] = b.vy;
+      w.w[lane] = b.w;
+      w.turn[lane] = b.turn;
+    }
+  }
+  return w;
+}
+
 // Only velocities change while solving, and only those of bodies the solver can move: a
 // kinematic body or the still body (no inverse mass or inertia) may sit in several
 // constraints of a colour, which other threads solve at the same time, so it is never
@@ -118,15 +164,8 @@ MINK_WIDE_INLINE void scatter_where(SolverBody* bodies, const std::int32_t* inde
   static_assert(offsetof(SolverBody, vx) == 0 && offsetof(SolverBody, turn) == 12);
   if constexpr (kWideLanes == 8) {
     typedef SolverReal Half __attribute__((vector_size(16)));
-    // Each register holds the rows of lanes k (low half) and k + 4 (high half).
-    const Wide t0 = MINK_SHUFFLE2(w.vx, w.vy, 0, 8, 1, 9, 4, 12, 5, 13);
-    const Wide t1 = MINK_SHUFFLE2(w.vx, w.vy, 2, 10, 3, 11, 6, 14, 7, 15);
-    const Wide t2 = MINK_SHUFFLE2(w.w, w.turn, 0, 8, 1, 9, 4, 12, 5, 13);
-    const Wide t3 = MINK_SHUFFLE2(w.w, w.turn, 2, 10, 3, 11, 6, 14, 7, 15);
-    const Wide rows[4] = {MINK_SHUFFLE2(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13),
-                          MINK_SHUFFLE2(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15),
-                          MINK_SHUFFLE2(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13),
-                          MINK_SHUFFLE2(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15)};
+    Wide rows[4] = {w.vx, w.vy, w.w, w.turn};
+    transpose4_halves(rows);
     // Unrolled, so each half is stored straight from its register.
 #pragma GCC unroll 8
     for (int lane = 0; lane < 8; ++lane) {
