@@ -25,6 +25,10 @@ std::string to_string(JointId id) {
 
 namespace {
 
+// How far apart a world point and a body's anchor can lie: both within max_world_coordinate on
+// each axis (an anchor's reach from its body is far less), with room.
+constexpr Real kLongestLength = 4 * max_world_coordinate;
+
 // The checks of one definition; `what` names the joint kind in messages.
 class DefCheck {
  public:
@@ -93,6 +97,18 @@ class DefCheck {
     require(!std::isnan(b.break_torque) && b.break_torque >= 0,
             what_ + ".break_torque must be non-negative");
   }
+  void in_world(const Vec2& v, const char* field) const {
+    require(detail::within_world(v),
+            what_ + "." + field + " must be finite and within max_world_coordinate (" +
+                detail::exact_number(max_world_coordinate) + " m) on each axis");
+  }
+  // A rope or rod between a world point and a body's anchor.
+  void length(Real v, const char* field) const {
+    positive(v, field);
+    require(v <= kLongestLength, what_ + "." + field + " must not exceed " +
+                                     detail::exact_number(kLongestLength) + " m, got " +
+                                     detail::exact_number(v));
+  }
   const std::string& what() const { return what_; }
 
  private:
@@ -150,13 +166,21 @@ void check_def(const DefCheck& c, const GearJointDef& d) {
   require(std::isfinite(d.ratio) && d.ratio != 0, c.what() + ".ratio must be finite and non-zero");
   require(!(d.joint1 == d.joint2), c.what() + ": joint1 and joint2 must differ");
 }
+// The ground anchors are world points, so within the world; the lengths within what two
+// points there can lie apart; the ratio within max_setting_magnitude. Beyond them the rope's
+// coordinate, length_a + ratio * length_b, and its speed overflowed to infinity (a ratio or a
+// ground anchor of 1.8e308).
 void check_def(const DefCheck& c, const PulleyJointDef& d) {
-  c.finite_point(d.ground_anchor_a, "ground_anchor_a");
-  c.finite_point(d.ground_anchor_b, "ground_anchor_b");
+  c.in_world(d.ground_anchor_a, "ground_anchor_a");
+  c.in_world(d.ground_anchor_b, "ground_anchor_b");
   c.anchors(d);
-  c.positive(d.length_a, "length_a");
-  c.positive(d.length_b, "length_b");
+  c.length(d.length_a, "length_a");
+  c.length(d.length_b, "length_b");
   c.positive(d.ratio, "ratio");
+  require(d.ratio <= max_setting_magnitude, c.what() +
+                                                ".ratio must not exceed max_setting_magnitude (" +
+                                                detail::exact_number(max_setting_magnitude) +
+                                                "), got " + detail::exact_number(d.ratio));
 }
 
 void add_unique(std::vector<std::uint32_t>& list, std::uint32_t value) {

@@ -504,6 +504,47 @@ TEST(FuzzFindings, FrictionAndRestitutionBeyondTheSettingLimitAreRefused) {
   EXPECT_NE(scene_error.find("friction"), std::string::npos) << scene_error;
 }
 
+// A pulley made with a ground anchor or a ratio of 1.8e308 read an infinite coordinate and
+// speed as soon as it was made (the World API harness with its extreme values): its rope's
+// length_a + ratio * length_b overflowed. Ground anchors beyond the world, ratios beyond
+// max_setting_magnitude and lengths no two points of the world can span are refused; at the
+// limits the pulley steps, reads finite and restores.
+TEST(FuzzFindings, PulleyBeyondTheWorldOrTheSettingLimitIsRefused) {
+  World world;
+  const BodyId a = test::add_ball(world, {-2, 5}, 0.25);
+  const BodyId b = test::add_ball(world, {2, 5}, 0.25);
+  const Real huge = std::numeric_limits<Real>::max();
+  const auto refusal = [&](const PulleyJointDef& def) {
+    return test::error_of<InvalidArgumentError>([&] { world.create_joint(def); });
+  };
+  std::string error =
+      refusal(pulley_joint_at(world, a, b, {-2, huge}, {2, 10}, {-2, 5}, {2, 5}, 1));
+  EXPECT_NE(error.find("pulley joint.ground_anchor_a"), std::string::npos) << error;
+  EXPECT_NE(error.find("max_world_coordinate"), std::string::npos) << error;
+  error = refusal(pulley_joint_at(world, a, b, {-2, 10}, {2, 10}, {-2, 5}, {2, 5}, huge));
+  EXPECT_NE(error.find("pulley joint.ratio must not exceed max_setting_magnitude"),
+            std::string::npos)
+      << error;
+  PulleyJointDef long_rope = pulley_joint_at(world, a, b, {-2, 10}, {2, 10}, {-2, 5}, {2, 5}, 1);
+  long_rope.length_b = 1e300;
+  error = refusal(long_rope);
+  EXPECT_NE(error.find("pulley joint.length_b must not exceed"), std::string::npos) << error;
+  EXPECT_EQ(world.joint_count(), 0u);
+
+  const JointId pulley = world.create_joint(pulley_joint_at(
+      world, a, b, {-2, max_world_coordinate}, {2, 10}, {-2, 5}, {2, 5}, max_setting_magnitude));
+  for (int i = 0; i < 30; ++i) {
+    world.step();
+    ASSERT_TRUE(all_finite(world)) << "step " << i;
+    ASSERT_TRUE(std::isfinite(world.joint_coordinate(pulley)) &&
+                std::isfinite(world.joint_speed(pulley)) &&
+                std::isfinite(world.joint_force(pulley).x()) &&
+                std::isfinite(world.joint_force(pulley).y()))
+        << "step " << i;
+  }
+  EXPECT_EQ(World::from_snapshot(world.snapshot()).state_hash(), world.state_hash());
+}
+
 // Every input in the snapshot-restore seed corpus, as that harness reads it (this build's
 // header put around the state, size and checksum made to fit; whole bytes when they start with
 // 'M'): refused with a SnapshotError, or a world that steps finite at 1 and 2 workers alike.

@@ -148,13 +148,13 @@ struct GearJointDef : JointBase {
 /// Hangs A and B from fixed ground points on ropes: length_a + ratio * length_b is constant
 /// (the lengths when the joint is made, by pulley_joint_at).
 struct PulleyJointDef : JointBase {
-  Vec2 ground_anchor_a{0, 0};  ///< world point A's rope runs over
-  Vec2 ground_anchor_b{0, 0};  ///< world point B's rope runs over
+  Vec2 ground_anchor_a{0, 0};  ///< world point A's rope runs over, within max_world_coordinate
+  Vec2 ground_anchor_b{0, 0};  ///< world point B's rope runs over, within max_world_coordinate
   Vec2 local_anchor_a{0, 0};
   Vec2 local_anchor_b{0, 0};
-  Real length_a = 1;  ///< rope length on A's side when made, > 0
-  Real length_b = 1;  ///< on B's side, > 0
-  Real ratio = 1;     ///< > 0
+  Real length_a = 1;  ///< rope length on A's side when made, > 0, <= 4 max_world_coordinate
+  Real length_b = 1;  ///< on B's side, > 0, <= 4 max_world_coordinate
+  Real ratio = 1;     ///< > 0, <= max_setting_magnitude
 };
 
 /// @brief Any joint's definition; World::joint_def returns a joint's current settings as one.
