@@ -4,18 +4,23 @@
 
 namespace mink::detail {
 
-void StageRunner::claim(std::uint32_t stage) {
-  Counters& c = counters_[stage];
-  const std::uint32_t count = counts_[stage];
-  for (;;) {
-    const std::uint32_t block = c.claimed.fetch_add(1, std::memory_order_relaxed);
-    if (block >= count) return;
-    run_(context_, stage, block);
-    c.done.fetch_add(1, std::memory_order_release);
+void StageRunner::claim(std::uint32_t stage, std::uint32_t worker) {
+  for (std::uint32_t k = 0; k < workers_; ++k) {
+    const std::uint32_t run = (worker + k) % workers_;
+    const std::uint32_t end = run_end(stage, run);
+    std::atomic<std::uint32_t>& next = runs_[stage * workers_ + run].next;
+    // A run another worker has drained is skipped without touching its line again.
+    if (next.load(std::memory_order_relaxed) >= end) continue;
+    for (;;) {
+      const std::uint32_t block = next.fetch_add(1, std::memory_order_relaxed);
+      if (block >= end) break;
+      run_(context_, stage, block);
+      done_[stage].blocks.fetch_add(1, std::memory_order_release);
+    }
   }
 }
 
-void StageRunner::follow(std::uint32_t begin, std::uint32_t end, std::uint32_t, void* self) {
+void StageRunner::follow(std::uint32_t begin, std::uint32_t end, std::uint32_t worker, void* self) {
   StageRunner& r = *static_cast<StageRunner*>(self);
   if (std::this_thread::get_id() == r.leader_) return;
   const auto last = static_cast<std::uint32_t>(r.counts_.size() + 1);
@@ -32,7 +37,7 @@ void StageRunner::follow(std::uint32_t begin, std::uint32_t end, std::uint32_t, 
         continue;
       }
       seen = open;
-      r.claim(open - 1);
+      r.claim(open - 1, worker);
       wait = SpinWait();
     }
   }
@@ -47,15 +52,23 @@ void StageRunner::run(TaskRunner& tasks, std::span<const std::uint32_t> block_co
     }
     return;
   }
-  if (capacity_ < stages) {
-    counters_ = std::make_unique<Counters[]>(stages);
-    capacity_ = stages;
+  workers_ = tasks.workers();
+  if (run_capacity_ < std::size_t{stages} * workers_) {
+    run_capacity_ = std::size_t{stages} * workers_;
+    runs_ = std::make_unique<Run[]>(run_capacity_);
   }
-  for (std::uint32_t s = 0; s < stages; ++s) {
-    counters_[s].claimed.store(0, std::memory_order_relaxed);
-    counters_[s].done.store(0, std::memory_order_relaxed);
+  if (done_capacity_ < stages) {
+    done_capacity_ = stages;
+    done_ = std::make_unique<Done[]>(stages);
   }
   counts_ = block_counts;
+  for (std::uint32_t s = 0; s < stages; ++s) {
+    for (std::uint32_t run = 0; run < workers_; ++run) {
+      runs_[s * workers_ + run].next.store(run == 0 ? 0 : run_end(s, run - 1),
+                                           std::memory_order_relaxed);
+    }
+    done_[s].blocks.store(0, std::memory_order_relaxed);
+  }
   run_ = run;
   context_ = context;
   open_.store(0, std::memory_order_relaxed);
@@ -63,9 +76,9 @@ void StageRunner::run(TaskRunner& tasks, std::span<const std::uint32_t> block_co
   void* followers = tasks.enqueue(&follow, tasks.workers() - 1, 1, this);
   for (std::uint32_t s = 0; s < stages; ++s) {
     open_.store(s + 1, std::memory_order_release);
-    claim(s);
+    claim(s, 0);
     SpinWait wait;
-    while (counters_[s].done.load(std::memory_order_acquire) < block_counts[s]) wait.pause();
+    while (done_[s].blocks.load(std::memory_order_acquire) < block_counts[s]) wait.pause();
   }
   open_.store(stages + 1, std::memory_order_release);
   tasks.finish(followers);

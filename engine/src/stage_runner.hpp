@@ -31,15 +31,27 @@ class StageRunner {
            void* context);
 
  private:
-  struct alignas(64) Counters {
-    std::atomic<std::uint32_t> claimed{0};
-    std::atomic<std::uint32_t> done{0};
+  // Each stage's blocks are dealt into one run per worker, in order. A worker takes the blocks
+  // of its own run first and then those left in the others': a block claimed once through its
+  // run's counter. Across the stages of a step a worker so keeps to the same part of each
+  // colour, and colours are sorted by body, so the bodies it moves stay in its own cache
+  // rather than passing between cores at every stage.
+  struct alignas(64) Run {
+    std::atomic<std::uint32_t> next{0};
+  };
+  struct alignas(64) Done {
+    std::atomic<std::uint32_t> blocks{0};
   };
   static void follow(std::uint32_t begin, std::uint32_t end, std::uint32_t worker, void* self);
-  void claim(std::uint32_t stage);
+  void claim(std::uint32_t stage, std::uint32_t worker);
+  std::uint32_t run_end(std::uint32_t stage, std::uint32_t run) const {
+    return static_cast<std::uint32_t>(std::uint64_t{counts_[stage]} * (run + 1) / workers_);
+  }
 
-  std::unique_ptr<Counters[]> counters_;
-  std::size_t capacity_ = 0;
+  std::unique_ptr<Run[]> runs_;  // stage * workers_ + run
+  std::unique_ptr<Done[]> done_;
+  std::size_t run_capacity_ = 0, done_capacity_ = 0;
+  std::uint32_t workers_ = 1;
   std::span<const std::uint32_t> counts_;
   BlockFunction* run_ = nullptr;
   void* context_ = nullptr;
