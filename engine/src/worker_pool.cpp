@@ -6,13 +6,23 @@
 
 namespace mink::detail {
 
+// A task's ranges are dealt into one run per worker, in order, each with its own counter: a
+// worker takes its own run's ranges first, then what is left of the others'. Phases over the
+// same items (the bodies, from the solver's set-up to their finish) then give each worker the
+// same part every time, and the records stay in its core's cache.
+struct alignas(64) WorkerPool::Run {
+  std::atomic<std::uint32_t> next{0};
+  std::uint32_t end = 0;
+};
+
 struct WorkerPool::Task {
+  explicit Task(std::uint32_t workers) : runs(std::make_unique<Run[]>(workers)) {}
   TaskFunction* function = nullptr;
   void* context = nullptr;
   std::uint32_t item_count = 0;
   std::uint32_t range_size = 1;
   std::uint32_t range_count = 0;
-  std::atomic<std::uint32_t> next_range{0};
+  std::unique_ptr<Run[]> runs;
   std::atomic<std::uint32_t> done_ranges{0};
   // Threads that took the task from the queue and may still look at it: it is reused only
   // once none does.
@@ -36,22 +46,32 @@ WorkerPool::~WorkerPool() {
   for (std::thread& t : threads_) t.join();
 }
 
-void WorkerPool::run_ranges(Task& task, std::uint32_t worker) {
-  for (;;) {
-    const std::uint32_t range = task.next_range.fetch_add(1, std::memory_order_relaxed);
-    if (range >= task.range_count) return;
-    const std::uint32_t begin = range * task.range_size;
-    const std::uint32_t end = std::min(task.item_count, begin + task.range_size);
-    task.function(begin, end, worker, task.context);
-    task.done_ranges.fetch_add(1, std::memory_order_release);
+bool WorkerPool::unclaimed(const Task& task) const {
+  for (std::uint32_t run = 0; run < workers(); ++run) {
+    if (task.runs[run].next.load(std::memory_order_relaxed) < task.runs[run].end) return true;
+  }
+  return false;
+}
+
+void WorkerPool::run_ranges(Task& task, std::uint32_t worker) const {
+  for (std::uint32_t k = 0; k < workers(); ++k) {
+    Run& run = task.runs[(worker + k) % workers()];
+    if (run.next.load(std::memory_order_relaxed) >= run.end) continue;
+    for (;;) {
+      const std::uint32_t range = run.next.fetch_add(1, std::memory_order_relaxed);
+      if (range >= run.end) break;
+      const std::uint32_t begin = range * task.range_size;
+      const std::uint32_t end = std::min(task.item_count, begin + task.range_size);
+      task.function(begin, end, worker, task.context);
+      task.done_ranges.fetch_add(1, std::memory_order_release);
+    }
   }
 }
 
 void* WorkerPool::enqueue(TaskFunction* function, std::uint32_t item_count, std::uint32_t min_range,
                           void* context) {
   if (item_count == 0) return nullptr;
-  const auto workers = static_cast<std::uint32_t>(threads_.size() + 1);
-  if (workers == 1) {
+  if (workers() == 1) {
     function(0, item_count, 0, context);
     return nullptr;
   }
@@ -59,7 +79,7 @@ void* WorkerPool::enqueue(TaskFunction* function, std::uint32_t item_count, std:
   {
     std::lock_guard lock(mutex_);
     if (free_tasks_.empty()) {
-      owned = std::make_unique<Task>();
+      owned = std::make_unique<Task>(workers());
     } else {
       owned = std::move(free_tasks_.back());
       free_tasks_.pop_back();
@@ -67,13 +87,17 @@ void* WorkerPool::enqueue(TaskFunction* function, std::uint32_t item_count, std:
   }
   Task& task = *owned;
   // About four ranges per worker: enough to even out uneven items, few enough to stay cheap.
-  const std::uint32_t target = 4 * workers;
+  const std::uint32_t target = 4 * workers();
   task.function = function;
   task.context = context;
   task.item_count = item_count;
   task.range_size = std::max(std::max(min_range, 1u), (item_count + target - 1) / target);
   task.range_count = (item_count + task.range_size - 1) / task.range_size;
-  task.next_range.store(0, std::memory_order_relaxed);
+  for (std::uint32_t run = 0; run < workers(); ++run) {
+    task.runs[run].next.store(run == 0 ? 0 : task.runs[run - 1].end, std::memory_order_relaxed);
+    task.runs[run].end =
+        static_cast<std::uint32_t>(std::uint64_t{task.range_count} * (run + 1) / workers());
+  }
   task.done_ranges.store(0, std::memory_order_relaxed);
   {
     std::lock_guard lock(mutex_);
@@ -107,7 +131,7 @@ void WorkerPool::work(std::uint32_t worker) {
       for (;;) {
         if (stopping_.load()) return;
         for (Task* t : queue_) {
-          if (t->next_range.load(std::memory_order_relaxed) < t->range_count) {
+          if (unclaimed(*t)) {
             task = t;
             task->visitors.fetch_add(1, std::memory_order_relaxed);
             break;
