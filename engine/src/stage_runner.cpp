@@ -5,19 +5,10 @@
 namespace mink::detail {
 
 void StageRunner::claim(std::uint32_t stage, std::uint32_t worker) {
-  for (std::uint32_t k = 0; k < workers_; ++k) {
-    const std::uint32_t run = (worker + k) % workers_;
-    const std::uint32_t end = run_end(stage, run);
-    std::atomic<std::uint32_t>& next = runs_[stage * workers_ + run].next;
-    // A run another worker has drained is skipped without touching its line again.
-    if (next.load(std::memory_order_relaxed) >= end) continue;
-    for (;;) {
-      const std::uint32_t block = next.fetch_add(1, std::memory_order_relaxed);
-      if (block >= end) break;
-      run_(context_, stage, block);
-      done_[stage].blocks.fetch_add(1, std::memory_order_release);
-    }
-  }
+  take_dealt(&runs_[stage * workers_], workers_, worker, [&](std::uint32_t block) {
+    run_(context_, stage, block);
+    done_[stage].blocks.fetch_add(1, std::memory_order_release);
+  });
 }
 
 void StageRunner::follow(std::uint32_t begin, std::uint32_t end, std::uint32_t worker, void* self) {
@@ -55,7 +46,7 @@ void StageRunner::run(TaskRunner& tasks, std::span<const std::uint32_t> block_co
   workers_ = tasks.workers();
   if (run_capacity_ < std::size_t{stages} * workers_) {
     run_capacity_ = std::size_t{stages} * workers_;
-    runs_ = std::make_unique<Run[]>(run_capacity_);
+    runs_ = std::make_unique<DealtRun[]>(run_capacity_);
   }
   if (done_capacity_ < stages) {
     done_capacity_ = stages;
@@ -63,10 +54,7 @@ void StageRunner::run(TaskRunner& tasks, std::span<const std::uint32_t> block_co
   }
   counts_ = block_counts;
   for (std::uint32_t s = 0; s < stages; ++s) {
-    for (std::uint32_t run = 0; run < workers_; ++run) {
-      runs_[s * workers_ + run].next.store(run == 0 ? 0 : run_end(s, run - 1),
-                                           std::memory_order_relaxed);
-    }
+    deal(&runs_[s * workers_], workers_, block_counts[s]);
     done_[s].blocks.store(0, std::memory_order_relaxed);
   }
   run_ = run;

@@ -6,6 +6,7 @@
 #include <span>
 #include <thread>
 
+#include "dealt_runs.hpp"
 #include "task_runner.hpp"
 
 namespace mink::detail {
@@ -31,24 +32,14 @@ class StageRunner {
            void* context);
 
  private:
-  // Each stage's blocks are dealt into one run per worker, in order. A worker takes the blocks
-  // of its own run first and then those left in the others': a block claimed once through its
-  // run's counter. Across the stages of a step a worker so keeps to the same part of each
-  // colour, and colours are sorted by body, so the bodies it moves stay in its own cache
-  // rather than passing between cores at every stage.
-  struct alignas(64) Run {
-    std::atomic<std::uint32_t> next{0};
-  };
+  // Each stage's blocks are dealt to the workers (dealt_runs.hpp).
   struct alignas(64) Done {
     std::atomic<std::uint32_t> blocks{0};
   };
   static void follow(std::uint32_t begin, std::uint32_t end, std::uint32_t worker, void* self);
   void claim(std::uint32_t stage, std::uint32_t worker);
-  std::uint32_t run_end(std::uint32_t stage, std::uint32_t run) const {
-    return static_cast<std::uint32_t>(std::uint64_t{counts_[stage]} * (run + 1) / workers_);
-  }
 
-  std::unique_ptr<Run[]> runs_;  // stage * workers_ + run
+  std::unique_ptr<DealtRun[]> runs_;  // stage * workers_ + run
   std::unique_ptr<Done[]> done_;
   std::size_t run_capacity_ = 0, done_capacity_ = 0;
   std::uint32_t workers_ = 1;

@@ -2,27 +2,19 @@
 
 #include <algorithm>
 
+#include "dealt_runs.hpp"
 #include "spin_wait.hpp"
 
 namespace mink::detail {
 
-// A task's ranges are dealt into one run per worker, in order, each with its own counter: a
-// worker takes its own run's ranges first, then what is left of the others'. Phases over the
-// same items (the bodies, from the solver's set-up to their finish) then give each worker the
-// same part every time, and the records stay in its core's cache.
-struct alignas(64) WorkerPool::Run {
-  std::atomic<std::uint32_t> next{0};
-  std::uint32_t end = 0;
-};
-
 struct WorkerPool::Task {
-  explicit Task(std::uint32_t workers) : runs(std::make_unique<Run[]>(workers)) {}
+  explicit Task(std::uint32_t workers) : runs(std::make_unique<DealtRun[]>(workers)) {}
   TaskFunction* function = nullptr;
   void* context = nullptr;
   std::uint32_t item_count = 0;
   std::uint32_t range_size = 1;
   std::uint32_t range_count = 0;
-  std::unique_ptr<Run[]> runs;
+  std::unique_ptr<DealtRun[]> runs;  // the ranges, dealt to the workers (dealt_runs.hpp)
   std::atomic<std::uint32_t> done_ranges{0};
   // Threads that took the task from the queue and may still look at it: it is reused only
   // once none does.
@@ -46,26 +38,13 @@ WorkerPool::~WorkerPool() {
   for (std::thread& t : threads_) t.join();
 }
 
-bool WorkerPool::unclaimed(const Task& task) const {
-  for (std::uint32_t run = 0; run < workers(); ++run) {
-    if (task.runs[run].next.load(std::memory_order_relaxed) < task.runs[run].end) return true;
-  }
-  return false;
-}
-
 void WorkerPool::run_ranges(Task& task, std::uint32_t worker) const {
-  for (std::uint32_t k = 0; k < workers(); ++k) {
-    Run& run = task.runs[(worker + k) % workers()];
-    if (run.next.load(std::memory_order_relaxed) >= run.end) continue;
-    for (;;) {
-      const std::uint32_t range = run.next.fetch_add(1, std::memory_order_relaxed);
-      if (range >= run.end) break;
-      const std::uint32_t begin = range * task.range_size;
-      const std::uint32_t end = std::min(task.item_count, begin + task.range_size);
-      task.function(begin, end, worker, task.context);
-      task.done_ranges.fetch_add(1, std::memory_order_release);
-    }
-  }
+  take_dealt(task.runs.get(), workers(), worker, [&](std::uint32_t range) {
+    const std::uint32_t begin = range * task.range_size;
+    const std::uint32_t end = std::min(task.item_count, begin + task.range_size);
+    task.function(begin, end, worker, task.context);
+    task.done_ranges.fetch_add(1, std::memory_order_release);
+  });
 }
 
 void* WorkerPool::enqueue(TaskFunction* function, std::uint32_t item_count, std::uint32_t min_range,
@@ -93,11 +72,7 @@ void* WorkerPool::enqueue(TaskFunction* function, std::uint32_t item_count, std:
   task.item_count = item_count;
   task.range_size = std::max(std::max(min_range, 1u), (item_count + target - 1) / target);
   task.range_count = (item_count + task.range_size - 1) / task.range_size;
-  for (std::uint32_t run = 0; run < workers(); ++run) {
-    task.runs[run].next.store(run == 0 ? 0 : task.runs[run - 1].end, std::memory_order_relaxed);
-    task.runs[run].end =
-        static_cast<std::uint32_t>(std::uint64_t{task.range_count} * (run + 1) / workers());
-  }
+  deal(task.runs.get(), workers(), task.range_count);
   task.done_ranges.store(0, std::memory_order_relaxed);
   {
     std::lock_guard lock(mutex_);
@@ -131,7 +106,7 @@ void WorkerPool::work(std::uint32_t worker) {
       for (;;) {
         if (stopping_.load()) return;
         for (Task* t : queue_) {
-          if (unclaimed(*t)) {
+          if (any_left(t->runs.get(), workers())) {
             task = t;
             task->visitors.fetch_add(1, std::memory_order_relaxed);
             break;

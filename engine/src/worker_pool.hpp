@@ -27,12 +27,9 @@ class WorkerPool {
   void finish(void* task);
 
  private:
-  struct Run;
   struct Task;
   std::uint32_t workers() const { return static_cast<std::uint32_t>(threads_.size() + 1); }
   void work(std::uint32_t worker);
-  // Whether `task` has ranges no worker has taken.
-  bool unclaimed(const Task& task) const;
   // Runs ranges of `task` until none is left unclaimed.
   void run_ranges(Task& task, std::uint32_t worker) const;
 
