@@ -96,6 +96,9 @@ MINK_WIDE_INLINE void transpose4_halves(Wide (&m)[4]) {
   m[3] = MINK_SHUFFLE2(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
 }
 
+// Half a body row: the velocities and the turn.
+typedef SolverReal Half __attribute__((vector_size(16)));
+
 MINK_WIDE_INLINE WideBody gather(const SolverBody* bodies, const std::int32_t* index) {
   WideBody w;
   if constexpr (kWideLanes == 8) {
@@ -119,12 +122,11 @@ MINK_WIDE_INLINE WideBody gather(const SolverBody* bodies, const std::int32_t* i
   return w;
 }
 
-// The rows' first halves only (velocities and turn; the other fields zero), for kernels that
-// read no position: half the loads, a third of the shuffles.
+// The rows' first halves (velocities and turn), for kernels that read no position: half the
+// loads, a third of the shuffles.
 MINK_WIDE_INLINE WideBody gather_velocities(const SolverBody* bodies, const std::int32_t* index) {
   WideBody w{};
   if constexpr (kWideLanes == 8) {
-    typedef SolverReal Half __attribute__((vector_size(16)));
     Half halves[8];
     for (int lane = 0; lane < 8; ++lane) {
       __builtin_memcpy(&halves[lane], &bodies[index[lane]], sizeof(Half));
@@ -140,13 +142,7 @@ MINK_WIDE_INLINE WideBody gather_velocities(const SolverBody* bodies, const std:
     w.w = m[2];
     w.turn = m[3];
   } else {
-    for (int lane = 0; lane < kWideLanes; ++lane) {
-      const SolverBody& b = bodies[index[lane]];
-      w.vx[lane] = b.vx;
-      w.vy[lane] = b.vy;
-      w.w[lane] = b.w;
-      w.turn[lane] = b.turn;
-    }
+    w = gather(bodies, index);  // without AVX-sized rows, the whole gather
   }
   return w;
 }
@@ -163,7 +159,6 @@ MINK_WIDE_INLINE void scatter_where(SolverBody* bodies, const std::int32_t* inde
                                     const WideBody& w, Written written) {
   static_assert(offsetof(SolverBody, vx) == 0 && offsetof(SolverBody, turn) == 12);
   if constexpr (kWideLanes == 8) {
-    typedef SolverReal Half __attribute__((vector_size(16)));
     Wide rows[4] = {w.vx, w.vy, w.w, w.turn};
     transpose4_halves(rows);
     // Unrolled, so each half is stored straight from its register.
