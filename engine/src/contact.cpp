@@ -108,6 +108,7 @@ void WorldState::destroy_contact(std::uint32_t index) {
   const std::uint32_t last = static_cast<std::uint32_t>(contacts.size() - 1);
   if (index != last) {
     contacts[index] = contacts[last];
+    contact_impulses[index] = contact_impulses[last];
     contact_slots[index] = contact_slots[last];
     const Contact& moved = contacts[index];
     contact_index.set(detail::pair_key(moved.proxy_a, moved.proxy_b), index);
@@ -115,6 +116,7 @@ void WorldState::destroy_contact(std::uint32_t index) {
     bodies[moved.body_b].contacts[contact_slots[index][1]] = index;
   }
   contacts.pop_back();
+  contact_impulses.pop_back();
   contact_slots.pop_back();
 }
 
@@ -221,6 +223,7 @@ void WorldState::update_pairs() {
     const auto index = static_cast<std::uint32_t>(contacts.size());
     contact_index.set(key, index);
     contacts.push_back(c);
+    contact_impulses.emplace_back();
     contact_slots.push_back({add_contact_to(bodies[c.body_a], index, c.b_fixed),
                              add_contact_to(bodies[c.body_b], index, c.a_fixed)});
   }
@@ -250,7 +253,7 @@ void measure_approach(Contact& c, const Body& a, const Body& b) {
 // One contact's narrowphase (collide() below): its manifold, warm-start impulses and
 // manifold cache, written to the contact alone so contacts can be collided in parallel.
 // Returns whether the shapes now touch.
-bool WorldState::update_manifold(Contact& c) const {
+bool WorldState::update_manifold(Contact& c, detail::ContactImpulses& impulses) const {
   const Real touching_distance = 4 * def.linear_slop;
   const bool reuse = def.reuse_manifolds;
   // A pair not yet touching must not miss its contact: it may move at most the touching
@@ -296,8 +299,7 @@ bool WorldState::update_manifold(Contact& c) const {
     }
   } else {
     const Manifold old = c.manifold;
-    const detail::SolverReal old_normal[2] = {c.normal_impulse[0], c.normal_impulse[1]};
-    const detail::SolverReal old_tangent[2] = {c.tangent_impulse[0], c.tangent_impulse[1]};
+    const detail::ContactImpulses old_impulses = impulses;
     // Speculative distance: the base margin plus how far the pair may close this step.
     const Vec2 dv = body_b.velocity - body_a.velocity;
     const Real closing = dv.norm() + std::abs(body_a.angular_velocity) * body_a.extent +
@@ -336,12 +338,12 @@ bool WorldState::update_manifold(Contact& c) const {
     // Warm start: carry the impulses of the point with the same feature id.
     for (int j = 0; j < c.manifold.point_count; ++j) {
       const ManifoldPoint& p = c.manifold.points[static_cast<std::size_t>(j)];
-      c.normal_impulse[j] = 0;
-      c.tangent_impulse[j] = 0;
+      impulses.normal[j] = 0;
+      impulses.tangent[j] = 0;
       for (int k = 0; k < old.point_count; ++k) {
         if (old.points[static_cast<std::size_t>(k)].id == p.id) {
-          c.normal_impulse[j] = old_normal[k];
-          c.tangent_impulse[j] = old_tangent[k];
+          impulses.normal[j] = old_impulses.normal[k];
+          impulses.tangent[j] = old_impulses.tangent[k];
           break;
         }
       }
@@ -365,8 +367,12 @@ void WorldState::mark_step_contacts(const Body& body, std::uint32_t worker) {
 const LargeVector<WorldState::StepContactKey>& WorldState::current_step_contact_keys() {
   if (!step_contact_keys_valid) {
     step_contact_keys.resize(step_contacts.size());
+    step_contact_seeds.resize(step_contacts.size());
     for (std::size_t k = 0; k < step_contacts.size(); ++k) {
       step_contact_keys[k] = step_contact_key(contacts[step_contacts[k]]);
+      if (step_contact_keys[k].acting()) {
+        step_contact_seeds[k] = step_contact_seed(step_contacts[k]);
+      }
     }
     step_contact_keys_valid = true;
   }
@@ -428,6 +434,7 @@ void WorldState::collide() {
   enum : std::uint8_t { kColorChange = 1, kTouchingChange = 2 };
   collide_changes.resize(step_contacts.size());
   step_contact_keys.resize(step_contacts.size());
+  step_contact_seeds.resize(step_contacts.size());
   tasks.parallel_for(static_cast<std::uint32_t>(step_contacts.size()), 64,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
                        for (std::uint32_t k = begin; k < end; ++k) {
@@ -443,9 +450,10 @@ void WorldState::collide() {
                          if (k + kCollideAhead / 4 < end) {
                            prefetch_hulls(contacts[step_contacts[k + kCollideAhead / 4]]);
                          }
-                         Contact& c = contacts[step_contacts[k]];
+                         const std::uint32_t ci = step_contacts[k];
+                         Contact& c = contacts[ci];
                          const bool was_touching = c.touching;
-                         const bool touching = update_manifold(c);
+                         const bool touching = update_manifold(c, contact_impulses[ci]);
                          const bool acting = c.manifold.point_count > 0;
                          collide_changes[k] = static_cast<std::uint8_t>(
                              (acting != (c.color != detail::kNoColor) ? kColorChange : 0) |
@@ -453,6 +461,7 @@ void WorldState::collide() {
                          StepContactKey& key = step_contact_keys[k];
                          key = step_contact_key(c);
                          key.touching = touching;  // c.touching follows below
+                         if (acting) step_contact_seeds[k] = step_contact_seed(ci);
                        }
                      });
   for (std::size_t k = 0; k < step_contacts.size(); ++k) {

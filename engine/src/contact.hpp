@@ -21,16 +21,22 @@ struct ManifoldCache {
   bool valid = false;
 };
 
-// A pair of shapes whose boxes overlap and that may touch. Ordered by use: what building
-// constraints reads fills the first two cache lines, the manifold cache (collide only) comes
-// last. The set-up reads a contact record for each of its constraints, scattered, so every
-// line it needs less is one fewer miss.
+// A contact's accumulated impulses per manifold point, in the solver's precision (they come
+// from its lanes and go back to them, so nothing is lost). Kept beside the contact records
+// (WorldState::contact_impulses, same index) rather than in them: the solver stores them for
+// every constraint at the end of each step, and sixteen bytes in a compact array are much
+// cheaper to write than a line of a record scattered over a large one.
+struct ContactImpulses {
+  SolverReal normal[2] = {0, 0};
+  SolverReal tangent[2] = {0, 0};
+};
+
+// A pair of shapes whose boxes overlap and that may touch. Ordered by use: what the
+// narrowphase's seed for the solver reads fills the first two cache lines, the manifold cache
+// (collide only) comes last.
 struct alignas(64) Contact {
   Manifold manifold;
-  // The accumulated impulses and the mixed materials in the solver's precision: the impulses
-  // come from its lanes and go back to them, the materials go to them, so nothing is lost.
-  SolverReal normal_impulse[2] = {0, 0};
-  SolverReal tangent_impulse[2] = {0, 0};
+  // The mixed materials in the solver's precision, which is where they go.
   SolverReal friction = 0, restitution = 0;
   std::uint32_t body_a = 0, body_b = 0;
   // Fastest normal approach over the points before the solve, and where (hit events only).
@@ -52,9 +58,33 @@ struct alignas(64) Contact {
   Vec2 approach_point{0, 0};
   ManifoldCache cache;
 };
-// What the solver's set-up reads of a contact: its first two cache lines.
-inline constexpr std::size_t kContactSetupBytes = 128;
-static_assert(offsetof(Contact, body_b) + sizeof(std::uint32_t) <= kContactSetupBytes);
+
+// The seed (contact_solver.hpp) of a contact with manifold points and its impulses, its
+// bodies' centres of mass where they are now.
+inline ContactSeed contact_seed(const Contact& c, const ContactImpulses& impulses,
+                                const Vec2& center_a, const Vec2& center_b) {
+  ContactSeed s;
+  s.nx = static_cast<SolverReal>(c.manifold.normal.x());
+  s.ny = static_cast<SolverReal>(c.manifold.normal.y());
+  s.dx = static_cast<SolverReal>(center_a.x() - center_b.x());
+  s.dy = static_cast<SolverReal>(center_a.y() - center_b.y());
+  s.friction = c.friction;
+  s.restitution = c.restitution;
+  for (int j = 0; j < 2; ++j) {
+    ContactSeed::Point& p = s.points[j];
+    if (j >= c.manifold.point_count) {
+      p = {};
+      continue;
+    }
+    const ManifoldPoint& mp = c.manifold.points[static_cast<std::size_t>(j)];
+    p.ax = static_cast<SolverReal>(mp.point.x() - center_a.x());
+    p.ay = static_cast<SolverReal>(mp.point.y() - center_a.y());
+    p.separation = static_cast<SolverReal>(mp.separation);
+    p.normal_impulse = impulses.normal[j];
+    p.tangent_impulse = impulses.tangent[j];
+  }
+  return s;
+}
 
 inline std::uint64_t pair_key(ProxyId a, ProxyId b) {
   return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);

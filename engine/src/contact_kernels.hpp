@@ -51,6 +51,12 @@ void warm_start_wide(SolverBody* bodies, WideConstraint* begin, WideConstraint* 
 // null when nothing bounces.
 void solve_wide(SolverBody* bodies, WideConstraint* begin, WideConstraint* end,
                 WideMaxImpulse* max_impulse, SolverReal inv_h, SolverReal max_push, bool use_bias);
+// The lanes of a SIMD batch built from their seeds, `count` of them, the lanes past them
+// padding (body `padding_body` on both sides, no mass, no impulse): bitwise what packing each
+// whole constraint and then finish_points_wide give. `soft` between two moving bodies,
+// `fixed_soft` where a side has no mass.
+void build_wide(WideConstraint& w, const BatchLane* lanes, int count, std::uint32_t two_points,
+                std::int32_t padding_body, const Softness& soft, const Softness& fixed_soft);
 // Writes `constraint` into lane `lane` of `wide`.
 void pack(WideConstraint& wide, int lane, const ContactConstraint& constraint);
 // Lane `lane` of `wide` as a constraint, its current impulses included; the fields the lanes do

@@ -114,9 +114,99 @@ MINK_WIDE_INLINE void finish_points_impl(WideConstraint& w, std::uint32_t two_po
   }
 }
 
+// Per lane: `padded` where `padding` is set, else `against_fixed` where `fixed` is, else
+// `moving`, each in the solver's precision.
+MINK_WIDE_INLINE Wide lanes_of(WideIndex padding, WideIndex fixed, Real padded, Real moving,
+                               Real against_fixed) {
+  return padding ? splat(static_cast<SolverReal>(padded))
+                 : (fixed ? splat(static_cast<SolverReal>(against_fixed))
+                          : splat(static_cast<SolverReal>(moving)));
+}
+
 }  // namespace
 
 MINK_WIDE_KERNEL void finish_points_wide(WideConstraint& w, std::uint32_t two_points) {
+  finish_points_impl(w, two_points);
+}
+
+MINK_WIDE_KERNEL void build_wide(WideConstraint& w, const BatchLane* lanes, int count,
+                                 std::uint32_t two_points, std::int32_t padding_body,
+                                 const Softness& soft, const Softness& fixed_soft) {
+  static constexpr ContactSeed kPadding = {1, 0, 0, 0, 0, 0, {{0, 0, 0, 0, 0}, {0, 0, 0, 0, 0}}};
+  static_assert(sizeof(ContactSeed) == 2 * sizeof(Wide));
+  const auto seed_of = [&](int lane) -> const ContactSeed& {
+    return lane < count ? *lanes[lane].seed : kPadding;
+  };
+  if constexpr (kWideLanes == 8) {
+    // A seed is two rows of eight fields: the batch's seeds are two 8 x 8 matrices whose
+    // transposes hold one field per register.
+    Wide low[8], high[8];
+    for (int lane = 0; lane < 8; ++lane) {
+      const ContactSeed& seed = seed_of(lane);
+      __builtin_memcpy(&low[lane], &seed, sizeof(Wide));
+      __builtin_memcpy(&high[lane], &seed.points[0].separation, sizeof(Wide));
+    }
+    static_assert(offsetof(ContactSeed, points[0].separation) == sizeof(Wide));
+    transpose8(low);
+    transpose8(high);
+    w.nx = low[0];
+    w.ny = low[1];
+    w.dx = low[2];
+    w.dy = low[3];
+    w.friction = low[4];
+    w.points[0].ax = low[6];
+    w.points[0].ay = low[7];
+    w.points[0].base_separation = high[0];
+    w.points[0].normal_impulse = high[1];
+    w.points[0].tangent_impulse = high[2];
+    w.points[1].ax = high[3];
+    w.points[1].ay = high[4];
+    w.points[1].base_separation = high[5];
+    w.points[1].normal_impulse = high[6];
+    w.points[1].tangent_impulse = high[7];
+  } else {
+    for (int lane = 0; lane < kWideLanes; ++lane) {
+      const ContactSeed& seed = seed_of(lane);
+      w.nx[lane] = seed.nx;
+      w.ny[lane] = seed.ny;
+      w.dx[lane] = seed.dx;
+      w.dy[lane] = seed.dy;
+      w.friction[lane] = seed.friction;
+      for (int j = 0; j < 2; ++j) {
+        w.points[j].ax[lane] = seed.points[j].ax;
+        w.points[j].ay[lane] = seed.points[j].ay;
+        w.points[j].base_separation[lane] = seed.points[j].separation;
+        w.points[j].normal_impulse[lane] = seed.points[j].normal_impulse;
+        w.points[j].tangent_impulse[lane] = seed.points[j].tangent_impulse;
+      }
+    }
+  }
+  Wide ma = splat(0), ia = ma, mb = ma, ib = ma, used = ma;
+  for (int lane = 0; lane < kWideLanes; ++lane) {
+    if (lane >= count) {
+      w.body_a[lane] = w.body_b[lane] = padding_body;
+      continue;
+    }
+    const BatchLane& in = lanes[lane];
+    w.body_a[lane] = in.body_a;
+    w.body_b[lane] = in.body_b;
+    ma[lane] = in.inv_mass_a;
+    ia[lane] = in.inv_inertia_a;
+    mb[lane] = in.inv_mass_b;
+    ib[lane] = in.inv_inertia_b;
+    used[lane] = 1;
+  }
+  w.inv_mass_a = ma;
+  w.inv_inertia_a = ia;
+  w.inv_mass_b = mb;
+  w.inv_inertia_b = ib;
+  // Padding is bias free and unscaled; a constraint with a side of no mass is fixed.
+  const Wide zero = splat(0);
+  const auto padding = used == zero;
+  const auto fixed = (ma == zero) | (mb == zero);
+  w.bias_rate = lanes_of(padding, fixed, 0, soft.bias_rate, fixed_soft.bias_rate);
+  w.mass_scale = lanes_of(padding, fixed, 1, soft.mass_scale, fixed_soft.mass_scale);
+  w.impulse_scale = lanes_of(padding, fixed, 0, soft.impulse_scale, fixed_soft.impulse_scale);
   finish_points_impl(w, two_points);
 }
 

@@ -83,22 +83,23 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
   };
   color_of_.resize(count);
   slot_.resize(count);
-  order_.resize(count);
   static_assert(kColorCount + 1 <= kRunColorStride);
   run_colors_.assign(runs * kRunColorStride, 0);
   tasks.parallel_for(runs, 1, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
     for (std::uint32_t run = begin; run < end; ++run) {
-      // Counted locally: the arrays written in the loop could alias the shared ones.
-      std::array<std::uint32_t, kColorCount + 1> counts{};
+      // Counted locally: the arrays written in the loop could alias the shared ones. An entry
+      // of no colour (kNoColor) is no constraint, counted nowhere.
+      std::array<std::uint32_t, kNoColor + 1> counts{};
       for (std::uint32_t i = run_first(run), last = run_first(run + 1); i < last; ++i) {
         color_of_[i] = constraints[i].color;
         ++counts[constraints[i].color];
       }
-      std::copy(counts.begin(), counts.end(), run_colors_.begin() + run * kRunColorStride);
+      std::copy_n(counts.begin(), kColorCount + 1, run_colors_.begin() + run * kRunColorStride);
     }
   });
   // Each run's first position per colour; the first run's are where the colours begin.
   const std::uint32_t placed = place_runs(run_colors_, runs, kRunColorStride, kColorCount + 1);
+  order_.resize(placed);
   color_begin_.assign(run_colors_.begin(), run_colors_.begin() + kColorCount + 1);
   color_begin_.push_back(placed);
   overflow_count_ = placed - color_begin_[kColorCount];
@@ -114,6 +115,7 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
       std::copy_n(run_colors_.begin() + run * kRunColorStride, next.size(), next.begin());
       for (std::uint32_t i = run_first(run), last = run_first(run + 1); i < last; ++i) {
         const std::uint8_t color = color_of_[i];
+        if (color == kNoColor) continue;
         const std::uint32_t position = next[color]++;
         order_[position] = i;
         if (!wide) {
@@ -137,7 +139,7 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
       }
     }
   } else {
-    scalar_.resize(constraints.size());
+    scalar_.resize(placed);
     wide_.clear();
     batch_first_.clear();
   }
@@ -156,26 +158,27 @@ std::span<const std::uint32_t> ContactSolver::overflow() const noexcept {
   return {order_.data() + first, order_.size() - first};
 }
 
-void ContactSolver::finish_batch(std::uint32_t batch, std::uint32_t two_points) {
-  finish_points_wide(wide_[batch], two_points);
+void ContactSolver::build_batch(std::uint32_t batch, std::span<const BatchLane> lanes,
+                                std::uint32_t two_points, const Softness& soft,
+                                const Softness& fixed_soft, std::uint32_t worker) {
+  build_wide(wide_[batch], lanes.data(), static_cast<int>(lanes.size()), two_points, still_, soft,
+             fixed_soft);
+  WorkerFindings& found = findings_[worker];
+  for (std::uint32_t lane = 0; lane < lanes.size(); ++lane) {
+    const BatchLane& in = lanes[lane];
+    if (in.seed->restitution <= 0) continue;
+    found.bouncy = true;
+    found.restitution.push_back({kWideLanes * batch + lane,
+                                 in.seed->restitution,
+                                 {in.relative_velocity[0], in.relative_velocity[1]}});
+  }
 }
 
 void ContactSolver::set(std::uint32_t index, const ContactConstraint& constraint,
                         std::uint32_t worker) {
-  const std::uint32_t slot = slot_[index];
   WorkerFindings& found = findings_[worker];
   found.bouncy = found.bouncy || constraint.restitution > 0;
-  if (slot & kScalar) {
-    scalar_[slot & ~kScalar] = constraint;
-  } else {
-    pack(wide_[slot / kWideLanes], static_cast<int>(slot % kWideLanes), constraint);
-    if (constraint.restitution > 0) {
-      found.restitution.push_back(
-          {slot,
-           constraint.restitution,
-           {constraint.points[0].relative_velocity, constraint.points[1].relative_velocity}});
-    }
-  }
+  scalar_[slot_[index] & ~kScalar] = constraint;
 }
 
 void ContactSolver::finish() {
@@ -193,20 +196,6 @@ void ContactSolver::finish() {
     std::merge(restitution_.begin(), restitution_.end(), f.restitution.begin(), f.restitution.end(),
                merged_.begin(), by_slot);
     restitution_.swap(merged_);
-  }
-  if (!wide_mode_) return;
-  // Lanes past the end of each colour's last batch: the still body, no mass, no impulse.
-  ContactConstraint padding{};
-  padding.body_a = padding.body_b = still_;
-  padding.nx = 1;
-  padding.mass_scale = 1;
-  for (std::size_t c = 0; c < kColorCount; ++c) {
-    const std::uint32_t count = color_begin_[c + 1] - color_begin_[c];
-    if (count % kWideLanes == 0) continue;
-    WideConstraint& w = wide_[wide_begin_[c + 1] - 1];
-    for (int lane = static_cast<int>(count % kWideLanes); lane < kWideLanes; ++lane) {
-      pack(w, lane, padding);
-    }
   }
 }
 

@@ -70,11 +70,39 @@ struct ContactConstraint {
   ContactConstraintPoint points[2];
 };
 
+// What a constraint is built from, in the solver's precision, written by the narrowphase while
+// the contact is at hand (contact.hpp): the set-up then reads one line of a compact array per
+// constraint, in the order the narrowphase wrote them, rather than two lines of a contact
+// record. Anchors are from each body's centre of mass, worked out in double precision (a world
+// far from the origin loses nothing); the point count travels with the constraint's bodies.
+struct alignas(64) ContactSeed {
+  SolverReal nx, ny;
+  SolverReal dx, dy;  // centre of A minus centre of B
+  SolverReal friction, restitution;
+  struct Point {
+    SolverReal ax, ay;  // from A's centre of mass
+    SolverReal separation;
+    SolverReal normal_impulse, tangent_impulse;
+  } points[2];
+};
+static_assert(sizeof(ContactSeed) == 64);
+
 // Spring softness of a constraint for a substep of length h (Box2D v3's soft step).
 struct Softness {
   Real bias_rate = 0, mass_scale = 1, impulse_scale = 0;
 };
 Softness make_softness(Real hertz, Real damping_ratio, Real h);
+
+// One lane of a SIMD batch as the set-up hands it to ContactSolver::build_batch: the contact's
+// seed, the constraint's solver bodies and their inverse masses (zero for a body the solver
+// cannot move), and, where the contact bounces, each point's normal approach speed when the
+// step began.
+struct BatchLane {
+  const ContactSeed* seed;
+  std::int32_t body_a, body_b;
+  SolverReal inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
+  SolverReal relative_velocity[2];
+};
 
 struct SolverSettings {
   SolverReal h = 0;  // substep length
@@ -98,15 +126,19 @@ struct WideMaxImpulse;
 struct ConstraintBodies {
   std::int32_t a = 0, b = 0;
   bool a_fixed = false, b_fixed = false;
-  std::uint8_t color = 0;   // from the constraint graph (kOverflowColor: one at a time)
+  // From the constraint graph (kOverflowColor: one at a time; kNoColor: no constraint, an
+  // entry begin() leaves out).
+  std::uint8_t color = 0;
   bool hit_events = false;  // the contact's shapes ask for hit events
+  std::uint8_t point_count = 0;
 };
 
 // The soft-step solver. begin() lays the constraints out by their colours from the constraint
 // graph (constraint_graph.hpp): within a colour no two constraints share a moving body, so a
 // colour's constraints are independent and are solved eight at a time in SIMD lanes (the
-// overflow, one at a time after them). set() then writes each constraint straight into its lane, so
-// the step never builds a scalar copy of every constraint. solve() runs every substep: integrate
+// overflow, one at a time after them). build_batch() then writes a batch's constraints
+// straight into its lanes, so the step never builds a scalar copy of every constraint; set()
+// writes the overflow's. solve() runs every substep: integrate
 // velocities, warm start, solve with bias, integrate positions, relax without bias; then
 // restitution.
 class ContactSolver {
@@ -126,8 +158,8 @@ class ContactSolver {
   // Runs on `tasks`, whose workers may then call set() at once.
   void begin(std::span<const ConstraintBodies> constraints, std::int32_t still, bool wide,
              TaskRunner& tasks);
-  // Constraint `index` (as passed to begin), once each, from any worker (each index writes
-  // only its own slot), then finish().
+  // Constraint `index` (as passed to begin) of the overflow, or any in scalar mode, once
+  // each, from any worker (each index writes only its own slot), then finish().
   void set(std::uint32_t index, const ContactConstraint& constraint, std::uint32_t worker);
   // The constraints (indices as passed to begin) in the order of their slots: colour by
   // colour, each colour's lanes in turn. Setting them in this order fills one SIMD batch
@@ -135,16 +167,18 @@ class ContactSolver {
   std::span<const std::uint32_t> slot_order() const noexcept { return order_; }
   // Wide mode: the SIMD batches, for a caller that fills a batch at a time, and the overflow.
   // A batch's constraints (indices as passed to begin; a colour's last batch may hold fewer
-  // than kWideLanes) are set() with their points' masses and base separations left out, then
-  // finish_batch() works those out for all its lanes at once (bitwise what finish_points
-  // gives each). The overflow's constraints are set() whole.
+  // than kWideLanes) are built by build_batch() from their lanes, in the batch's order, all
+  // lanes at once (bitwise what building each whole and set() give); the lanes past them
+  // become padding (the still body, no mass). The overflow's constraints are set() whole.
   std::uint32_t batch_count() const noexcept {
     return static_cast<std::uint32_t>(batch_first_.size());
   }
   std::span<const std::uint32_t> batch(std::uint32_t batch) const noexcept;
   std::span<const std::uint32_t> overflow() const noexcept;
-  // `two_points`: bit `lane` set for each lane whose constraint has two points.
-  void finish_batch(std::uint32_t batch, std::uint32_t two_points);
+  // `two_points`: bit `lane` set for each lane whose constraint has two points. `soft` is the
+  // softness between two moving bodies, `fixed_soft` against one the solver cannot move.
+  void build_batch(std::uint32_t batch, std::span<const BatchLane> lanes, std::uint32_t two_points,
+                   const Softness& soft, const Softness& fixed_soft, std::uint32_t worker);
   void finish();
   // `joints`, when given, runs its part of each stage before the contacts.
   // The stages run on the task runner's workers, each colour split into blocks; the result

@@ -93,7 +93,7 @@ void WorldState::update_islands() {
   // flags come from the compact keys, in order.
   for (const StepContactKey& c : current_step_contact_keys()) {
     if (!c.a_fixed && !c.b_fixed) {
-      if (c.acting) join_dynamic(c.body_a, c.body_b);
+      if (c.acting()) join_dynamic(c.body_a, c.body_b);
       continue;
     }
     if (!c.touching) continue;

@@ -88,7 +88,15 @@ void state_fields(Archive& a, WorldState& w) {
     w.broadphase.save(a);
   }
   a(w.pending_proxy_destroys);
-  a(w.contacts);
+  if constexpr (Archive::loading) {
+    w.contacts.resize(a.count(1));
+    w.contact_impulses.resize(w.contacts.size());
+  } else {
+    a.count(w.contacts.size());
+  }
+  for (std::size_t i = 0; i < w.contacts.size(); ++i) {
+    detail::contact_io(a, w.contacts[i], w.contact_impulses[i]);
+  }
   a(w.sensors);
   std::uint64_t touching = w.touching_count;
   a(touching);

@@ -257,8 +257,11 @@ void check_joint(const Joint& joint, const std::string& what, ByteReader& in) {
 
 // A contact's points and cached poses lie in the world, its normals are unit vectors: the
 // solver's lever arms and the manifold reuse take them as they are.
-void check_contact(const Contact& c, const std::string& what, ByteReader& in) {
-  if (!all_finite(c) || !(valid_coefficient(c.friction) && valid_coefficient(c.restitution))) {
+void check_contact(const Contact& c, const ContactImpulses& impulses, const std::string& what,
+                   ByteReader& in) {
+  FiniteWalk walk;
+  contact_io(walk, const_cast<Contact&>(c), const_cast<ContactImpulses&>(impulses));
+  if (!walk.finite || !(valid_coefficient(c.friction) && valid_coefficient(c.restitution))) {
     in.fail(what + " holds a non-finite or negative value");
   }
   const Manifold& m = c.manifold;
@@ -298,7 +301,7 @@ void check_values(const WorldState& w, ByteReader& in) {
     if (w.joints[i].alive) check_joint(w.joints[i], "joint " + std::to_string(i), in);
   }
   for (std::size_t i = 0; i < w.contacts.size(); ++i) {
-    check_contact(w.contacts[i], "contact " + std::to_string(i), in);
+    check_contact(w.contacts[i], w.contact_impulses[i], "contact " + std::to_string(i), in);
   }
 }
 

@@ -512,15 +512,16 @@ void io(Archive& a, ManifoldCache& c) {
   a(c.on_b[1]);
   a(c.valid);
 }
+// A contact and its impulses, which live beside the records (contact.hpp), as one record.
 template <typename Archive>
-void io(Archive& a, Contact& c) {
+void contact_io(Archive& a, Contact& c, ContactImpulses& impulses) {
   a(c.manifold);
   a(c.body_a);
   a(c.body_b);
-  a(c.normal_impulse[0]);
-  a(c.normal_impulse[1]);
-  a(c.tangent_impulse[0]);
-  a(c.tangent_impulse[1]);
+  a(impulses.normal[0]);
+  a(impulses.normal[1]);
+  a(impulses.tangent[0]);
+  a(impulses.tangent[1]);
   a(c.friction);
   a(c.restitution);
   a(c.shape_a);

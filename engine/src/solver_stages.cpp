@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <numbers>
 
+#include "contact_kernels.hpp"
 #include "prefetch.hpp"
-#include "run_counts.hpp"
 #include "world_state.hpp"
 
 namespace mink {
@@ -38,18 +38,6 @@ using detail::Shape;
 namespace {
 
 constexpr std::uint32_t kPrefetchAhead = 8;
-
-// What the solver's set-up reads of a contact (contact.hpp).
-void prefetch_contact(const Contact& c) {
-  prefetch_bytes(&c, detail::kContactSetupBytes);
-}
-
-// What storing a contact's impulses writes: one cache line (contact.hpp).
-void prefetch_contact_impulses(const Contact& c) {
-  static_assert(offsetof(Contact, normal_impulse) / 64 ==
-                (offsetof(Contact, tangent_impulse) + sizeof(c.tangent_impulse) - 1) / 64);
-  prefetch_line(&c.normal_impulse);
-}
 
 // The three cache lines of a body record the solver's set-up reads (body.hpp).
 void prefetch_solver_setup(const Body& b) {
@@ -163,137 +151,121 @@ void WorldState::prepare_contacts() {
   const detail::Softness static_soft =
       detail::make_softness(2 * contact_hertz, def.contact_damping_ratio, h);
 
-  // Which contacts become constraints, and between which solver bodies, in order of their
-  // first moving body and then of the contacts (a stable counting sort): neighbouring
-  // constraints then touch neighbouring bodies and the solver's gathers stay in cache. The
+  // Which step contacts become constraints, and between which solver bodies, from the compact
+  // keys rather than the contact records: one entry per step contact, kNoColor where it is no
+  // constraint, so a constraint's index is its step contact's (the seeds', the keys'). The
   // solver colours them next, then each constraint is built straight into its slot.
-  // A dynamic body is the only kind with mass, so the compact solver records tell which
-  // bodies the solver moves; the still body is fixed as well (the colouring relies on it).
-  const auto fixed = [&](std::int32_t index) {
-    return index < 0 || solver_info[static_cast<std::size_t>(index)].inv_mass == 0;
-  };
-  // From the compact keys, in order, rather than the contact records. Whether step contact k
-  // acts on a solver body, and as what constraint.
   const LargeVector<StepContactKey>& keys = current_step_contact_keys();
-  const auto constraint_of = [&](std::size_t k, detail::ConstraintBodies& cb) {
-    const StepContactKey& key = keys[k];
-    if (!key.acting) return false;
-    const std::int32_t ia = body_solver_index[key.body_a], ib = body_solver_index[key.body_b];
-    if (ia < 0 && ib < 0) return false;
-    cb = {ia < 0 ? still : ia, ib < 0 ? still : ib, fixed(ia),
-          fixed(ib),           key.color,           key.hit_events};
-    return true;
-  };
-  const auto first_body = [&](const detail::ConstraintBodies& cb) {
-    return static_cast<std::size_t>(cb.a == still ? cb.b : cb.a);
-  };
-  // The step contacts in one run per worker (run_counts.hpp).
-  {
-    const std::uint32_t runs = tasks.workers();
-    const std::size_t first_bodies = solver_bodies.size();
-    const auto run_first = [&](std::uint32_t run) {
-      return detail::run_begin(step_contacts.size(), run, runs);
-    };
-    run_counts.assign(runs * first_bodies, 0);
-    tasks.parallel_for(runs, 1, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-      for (std::uint32_t run = begin; run < end; ++run) {
-        std::uint32_t* counts = run_counts.data() + run * first_bodies;
-        detail::ConstraintBodies cb;
-        for (std::size_t k = run_first(run), last = run_first(run + 1); k < last; ++k) {
-          if (constraint_of(k, cb)) ++counts[first_body(cb)];
-        }
-      }
-    });
-    const std::uint32_t placed = detail::place_runs(run_counts, runs, first_bodies, first_bodies);
-    constraint_contacts.resize(placed);
-    constraint_bodies.resize(placed);
-    tasks.parallel_for(runs, 1, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
-      for (std::uint32_t run = begin; run < end; ++run) {
-        std::uint32_t* next = run_counts.data() + run * first_bodies;
-        detail::ConstraintBodies cb;
-        for (std::size_t k = run_first(run), last = run_first(run + 1); k < last; ++k) {
-          if (!constraint_of(k, cb)) continue;
-          const std::uint32_t at = next[first_body(cb)]++;
-          constraint_contacts[at] = step_contacts[k];
-          constraint_bodies[at] = cb;
-        }
-      }
-    });
-  }
+  constraint_bodies.resize(step_contacts.size());
+  tasks.parallel_for(static_cast<std::uint32_t>(keys.size()), 1024,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       for (std::uint32_t k = begin; k < end; ++k) {
+                         const StepContactKey& key = keys[k];
+                         const std::int32_t ia = body_solver_index[key.body_a];
+                         const std::int32_t ib = body_solver_index[key.body_b];
+                         if (!key.acting() || (ia < 0 && ib < 0)) {
+                           constraint_bodies[k] = {still, still, true, true, detail::kNoColor};
+                           continue;
+                         }
+                         // The solver moves dynamic bodies only (not static or kinematic, as
+                         // the contact's flags say); the still body is fixed as well (the
+                         // colouring relies on it).
+                         constraint_bodies[k] = {
+                             ia < 0 ? still : ia,   ib < 0 ? still : ib, ia < 0 || key.a_fixed,
+                             ib < 0 || key.b_fixed, key.color,           key.hit_events,
+                             key.point_count};
+                       }
+                     });
   contact_solver.begin(constraint_bodies, still, def.simd_solver, tasks);
 
-  // Per-constraint body data comes from the compact solver arrays, not the body records.
-  const auto info = [&](std::uint32_t body, std::int32_t index) {
-    if (index != still) return solver_info[static_cast<std::size_t>(index)];
-    return detail::SolverBodyInfo{bodies[body].center.x(), bodies[body].center.y(), 0, 0};
+  // Per-constraint body data comes from the compact solver arrays and the contact's seed, not
+  // the body and contact records.
+  const LargeVector<detail::ContactSeed>& seeds = step_contact_seeds;
+  const auto masses = [&](std::int32_t index, detail::SolverReal& inv_mass,
+                          detail::SolverReal& inv_inertia) {
+    if (index == still) {
+      inv_mass = inv_inertia = 0;
+      return;
+    }
+    const detail::SolverBodyInfo& info = solver_info[static_cast<std::size_t>(index)];
+    inv_mass = static_cast<detail::SolverReal>(info.inv_mass);
+    inv_inertia = static_cast<detail::SolverReal>(info.inv_inertia);
   };
-  // Constraint r into its slot; `whole` works its points' masses out here, one at a time,
-  // rather than for its whole SIMD batch after (ContactSolver::finish_batch). Whether it has
-  // two points.
-  const auto build = [&](std::uint32_t r, std::uint32_t worker, bool whole) {
+  // The normal approach speed of a seed's point when the step began, which only restitution
+  // reads: the bodies' velocities are loaded for bouncing contacts alone.
+  using detail::SolverReal;
+  const auto approach = [&](const detail::ContactSeed& seed, const detail::ContactSeed::Point& p,
+                            std::int32_t body_a, std::int32_t body_b) {
+    const detail::SolverBody& sa = solver_bodies[static_cast<std::size_t>(body_a)];
+    const detail::SolverBody& sb = solver_bodies[static_cast<std::size_t>(body_b)];
+    const SolverReal bx = p.ax + seed.dx, by = p.ay + seed.dy;
+    const SolverReal dvx = (sb.vx - sb.w * by) - (sa.vx - sa.w * p.ay);
+    const SolverReal dvy = (sb.vy + sb.w * bx) - (sa.vy + sa.w * p.ax);
+    return dvx * seed.nx + dvy * seed.ny;
+  };
+  // Constraint r whole, one at a time: the overflow's, or every one for the scalar solver.
+  const auto build = [&](std::uint32_t r, std::uint32_t worker) {
     detail::ContactConstraint k;
-    const Contact& c = contacts[constraint_contacts[r]];
+    const detail::ContactSeed& seed = seeds[r];
     const detail::ConstraintBodies& cb = constraint_bodies[r];
-    const detail::SolverBodyInfo a = info(c.body_a, cb.a), b = info(c.body_b, cb.b);
     k.body_a = cb.a;
     k.body_b = cb.b;
-    k.inv_mass_a = a.inv_mass;
-    k.inv_inertia_a = a.inv_inertia;
-    k.inv_mass_b = b.inv_mass;
-    k.inv_inertia_b = b.inv_inertia;
-    k.nx = c.manifold.normal.x();
-    k.ny = c.manifold.normal.y();
-    k.dx = a.cx - b.cx;
-    k.dy = a.cy - b.cy;
-    k.friction = c.friction;
-    k.restitution = c.restitution;
+    masses(cb.a, k.inv_mass_a, k.inv_inertia_a);
+    masses(cb.b, k.inv_mass_b, k.inv_inertia_b);
+    k.nx = seed.nx;
+    k.ny = seed.ny;
+    k.dx = seed.dx;
+    k.dy = seed.dy;
+    k.friction = seed.friction;
+    k.restitution = seed.restitution;
     const detail::Softness& s = (k.inv_mass_a == 0 || k.inv_mass_b == 0) ? static_soft : soft;
     k.bias_rate = s.bias_rate;
     k.mass_scale = s.mass_scale;
     k.impulse_scale = s.impulse_scale;
-    k.point_count = c.manifold.point_count;
+    k.point_count = cb.point_count;
     if (k.point_count < 2) k.points[1] = detail::ContactConstraintPoint{};
-    // Past the anchors (world points less centres, in double so a world far from the origin
-    // loses nothing), everything is small and in the solver's precision.
-    using detail::SolverReal;
     for (int j = 0; j < k.point_count; ++j) {
-      const ManifoldPoint& mp = c.manifold.points[static_cast<std::size_t>(j)];
+      const detail::ContactSeed::Point& sp = seed.points[j];
       detail::ContactConstraintPoint& p = k.points[j];
-      const SolverReal ax = static_cast<SolverReal>(mp.point.x() - a.cx);
-      const SolverReal ay = static_cast<SolverReal>(mp.point.y() - a.cy);
+      p.ax = sp.ax;
+      p.ay = sp.ay;
       // Through the centre offset, as the wide solver recomputes it (same bits).
-      const SolverReal bx = ax + k.dx, by = ay + k.dy;
-      p.ax = ax;
-      p.ay = ay;
-      p.bx = bx;
-      p.by = by;
-      p.base_separation = static_cast<SolverReal>(mp.separation);  // finish_points' to finish
-      p.normal_impulse = c.normal_impulse[j];
-      p.tangent_impulse = c.tangent_impulse[j];
+      p.bx = sp.ax + k.dx;
+      p.by = sp.ay + k.dy;
+      p.base_separation = sp.separation;  // finish_points' to finish
+      p.normal_impulse = sp.normal_impulse;
+      p.tangent_impulse = sp.tangent_impulse;
       p.max_normal_impulse = 0;
-      p.relative_velocity = 0;
-      // The approach speed only restitution reads: the bodies' velocities are loaded for
-      // bouncing contacts alone.
-      if (k.restitution > 0) {
-        const detail::SolverBody& sa = solver_bodies[static_cast<std::size_t>(k.body_a)];
-        const detail::SolverBody& sb = solver_bodies[static_cast<std::size_t>(k.body_b)];
-        const SolverReal dvx = (sb.vx - sb.w * by) - (sa.vx - sa.w * ay);
-        const SolverReal dvy = (sb.vy + sb.w * bx) - (sa.vy + sa.w * ax);
-        p.relative_velocity = dvx * k.nx + dvy * k.ny;
+      p.relative_velocity = k.restitution > 0 ? approach(seed, sp, cb.a, cb.b) : 0;
+    }
+    detail::finish_points(k);
+    contact_solver.set(r, k, worker);
+  };
+  // Constraint r as a lane of its SIMD batch.
+  const auto batch_lane = [&](std::uint32_t r) {
+    const detail::ConstraintBodies& cb = constraint_bodies[r];
+    detail::BatchLane lane;
+    lane.seed = &seeds[r];
+    lane.body_a = cb.a;
+    lane.body_b = cb.b;
+    masses(cb.a, lane.inv_mass_a, lane.inv_inertia_a);
+    masses(cb.b, lane.inv_mass_b, lane.inv_inertia_b);
+    if (lane.seed->restitution > 0) {
+      for (int j = 0; j < 2; ++j) {
+        lane.relative_velocity[j] =
+            j < cb.point_count ? approach(*lane.seed, lane.seed->points[j], cb.a, cb.b) : 0;
       }
     }
-    if (whole) detail::finish_points(k);
-    contact_solver.set(r, k, worker);
-    return k.point_count == 2;
+    return lane;
   };
   // Each constraint is built into its own slot, so they are built in parallel, in slot order
-  // (one SIMD batch filled after another). Their contacts are scattered through memory: those
-  // a few slots ahead are asked for early.
+  // (one SIMD batch filled after another). A colour's seeds come in their order but with gaps,
+  // and their bodies' records are scattered: those a few slots ahead are asked for early.
   const std::span<const std::uint32_t> order = contact_solver.slot_order();
   const auto prefetch_ahead = [&](std::size_t position, std::size_t end) {
     if (position + kPrefetchAhead >= end) return;
     const std::uint32_t ahead = order[position + kPrefetchAhead];
-    prefetch_contact(contacts[constraint_contacts[ahead]]);
+    prefetch_line(&seeds[ahead]);
     const detail::ConstraintBodies& cb = constraint_bodies[ahead];
     // The still body has no record there.
     if (cb.a != still) prefetch_line(&solver_info[static_cast<std::size_t>(cb.a)]);
@@ -303,20 +275,25 @@ void WorldState::prepare_contacts() {
     return static_cast<std::size_t>(constraints.data() - order.data());
   };
   if (def.simd_solver) {
-    // A batch at a time, its points' masses for all its lanes at once.
+    // A batch at a time, all its lanes at once from their seeds.
     tasks.parallel_for(contact_solver.batch_count(), 32,
                        [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
                          const std::span<const std::uint32_t> last = contact_solver.batch(end - 1);
                          const std::size_t stop = position_of(last) + last.size();
+                         detail::BatchLane in[detail::kWideLanes];
                          for (std::uint32_t w = begin; w < end; ++w) {
                            const std::span<const std::uint32_t> lanes = contact_solver.batch(w);
                            const std::size_t first = position_of(lanes);
                            std::uint32_t two_points = 0;
                            for (std::uint32_t lane = 0; lane < lanes.size(); ++lane) {
                              prefetch_ahead(first + lane, stop);
-                             if (build(lanes[lane], worker, false)) two_points |= 1u << lane;
+                             in[lane] = batch_lane(lanes[lane]);
+                             if (constraint_bodies[lanes[lane]].point_count == 2) {
+                               two_points |= 1u << lane;
+                             }
                            }
-                           contact_solver.finish_batch(w, two_points);
+                           contact_solver.build_batch(w, {in, lanes.size()}, two_points, soft,
+                                                      static_soft, worker);
                          }
                        });
   }
@@ -328,7 +305,7 @@ void WorldState::prepare_contacts() {
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
                        for (std::uint32_t k = begin; k < end; ++k) {
                          prefetch_ahead(singles_first + k, singles_first + end);
-                         build(singles[k], worker, true);
+                         build(singles[k], worker);
                        }
                      });
   contact_solver.finish();
@@ -380,34 +357,34 @@ void WorldState::solve() {
   // parallel, which also marks the hits (the shapes met fast and the contact pushed: a
   // speculative point that never closed does not count); their events after, in constraint
   // order, from the marks rather than from every contact again. The impulses are read in slot
-  // order, the order of the solver's lanes in memory; the contacts, scattered, are asked for a
-  // few ahead.
-  hit_marks.assign(constraint_contacts.size(), 0);
+  // order, the order of the solver's lanes in memory; where they go is asked for a few ahead.
+  hit_marks.assign(constraint_bodies.size(), 0);
+  const auto contact_of = [&](std::uint32_t r) { return step_contacts[r]; };
   const std::span<const std::uint32_t> order = contact_solver.slot_order();
   tasks.parallel_for(
       static_cast<std::uint32_t>(order.size()), 256,
       [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
         for (std::uint32_t k = begin; k < end; ++k) {
           if (k + kPrefetchAhead < end) {
-            prefetch_contact_impulses(contacts[constraint_contacts[order[k + kPrefetchAhead]]]);
+            prefetch_line(&contact_impulses[contact_of(order[k + kPrefetchAhead])]);
           }
           const std::uint32_t r = order[k];
-          Contact& c = contacts[constraint_contacts[r]];
-          contact_solver.impulses(r, c.normal_impulse, c.tangent_impulse);
+          const std::uint32_t ci = contact_of(r);
+          detail::ContactImpulses& impulses = contact_impulses[ci];
+          contact_solver.impulses(r, impulses.normal, impulses.tangent);
           if (stopped_in_step(constraint_bodies[r].a) || stopped_in_step(constraint_bodies[r].b)) {
-            c.normal_impulse[0] = c.normal_impulse[1] = 0;
-            c.tangent_impulse[0] = c.tangent_impulse[1] = 0;
+            impulses = {};
           }
           // The hit flag from the constraint's record: the contact's line with the approach
           // speed is read for hit-event contacts only.
           hit_marks[r] = constraint_bodies[r].hit_events &&
-                         c.approach_speed > def.hit_event_threshold &&
-                         std::max(c.normal_impulse[0], c.normal_impulse[1]) > 0;
+                         contacts[ci].approach_speed > def.hit_event_threshold &&
+                         std::max(impulses.normal[0], impulses.normal[1]) > 0;
         }
       });
-  for (std::uint32_t r = 0; r < constraint_contacts.size(); ++r) {
+  for (std::uint32_t r = 0; r < constraint_bodies.size(); ++r) {
     if (hit_marks[r] == 0) continue;
-    const Contact& c = contacts[constraint_contacts[r]];
+    const Contact& c = contacts[contact_of(r)];
     hit_events.push_back({shape_id(c.shape_a), shape_id(c.shape_b), c.approach_point,
                           c.manifold.normal, c.approach_speed});
   }

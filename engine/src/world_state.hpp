@@ -53,6 +53,7 @@ struct WorldState {
   std::vector<ProxyId> pending_proxy_destroys;
 
   LargeVector<detail::Contact> contacts;
+  LargeVector<detail::ContactImpulses> contact_impulses;  // per contact (contact.hpp)
   detail::ContactMap contact_index;
   // Where each contact is listed in its bodies' contact lists ([0]: body_a's, [1]: body_b's),
   // so removing it edits the lists in place rather than searching them (a static body holding
@@ -82,18 +83,27 @@ struct WorldState {
   struct StepContactKey {
     std::uint32_t body_a, body_b;
     std::uint8_t color;
-    bool acting;  // has manifold points
+    std::uint8_t point_count;  // acting when it has manifold points
     bool a_fixed, b_fixed, touching, hit_events;
+    bool acting() const { return point_count > 0; }
   };
   StepContactKey step_contact_key(const detail::Contact& c) const {
-    return {c.body_a,  c.body_b,  c.color,    c.manifold.point_count > 0,
+    return {c.body_a,  c.body_b,  c.color,    static_cast<std::uint8_t>(c.manifold.point_count),
             c.a_fixed, c.b_fixed, c.touching, c.hit_events};
   }
   LargeVector<StepContactKey> step_contact_keys;
+  // Per step contact with manifold points, what its constraint is built from (contact.hpp);
+  // current whenever the keys are.
+  LargeVector<detail::ContactSeed> step_contact_seeds;
   bool step_contact_keys_valid = false;
   // The keys of step_contacts as they are now: collide()'s, or read again from the contacts
-  // when the list changed since.
+  // when the list changed since (the seeds with them).
   const LargeVector<StepContactKey>& current_step_contact_keys();
+  detail::ContactSeed step_contact_seed(std::uint32_t contact) const {
+    const detail::Contact& c = contacts[contact];
+    return detail::contact_seed(c, contact_impulses[contact], bodies[c.body_a].center,
+                                bodies[c.body_b].center);
+  }
 
   std::vector<ContactBeginEvent> begin_events;
   std::vector<ContactEndEvent> end_events;
@@ -134,9 +144,7 @@ struct WorldState {
   // one that did (stop_diverged); empty when every solve held.
   std::vector<std::uint8_t> stopped;
   LargeVector<detail::SolverBodyInfo> solver_info;
-  LargeVector<std::uint32_t> constraint_contacts;
-  LargeVector<detail::ConstraintBodies> constraint_bodies;
-  LargeVector<std::uint32_t> run_counts;  // per worker and first body, while ordering them
+  LargeVector<detail::ConstraintBodies> constraint_bodies;  // per step contact
   detail::ContactSolver contact_solver;
   std::int32_t still_body = 0;                   // the solver body standing in for the unmoving
   std::vector<std::uint32_t> step_joints;        // joints of moving bodies this step, solve order
@@ -204,7 +212,7 @@ struct WorldState {
   // Marks the body's contacts for this step; collect_step_contacts lists the marked ones.
   void mark_step_contacts(const detail::Body& body, std::uint32_t worker = 0);
   void collect_step_contacts();
-  bool update_manifold(detail::Contact& contact) const;
+  bool update_manifold(detail::Contact& contact, detail::ContactImpulses& impulses) const;
   void collide();
   // sensor.cpp
   void update_sensors();
