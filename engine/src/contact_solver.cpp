@@ -25,8 +25,8 @@
 // Speed: Gauss-Seidel is a chain of dependent updates, so one constraint at a time the CPU
 // mostly waits on latency. As in Box2D v3, the constraint graph is coloured so that no two
 // constraints of a colour share a moving body; a colour is then solved eight constraints at a
-// time in SIMD lanes (GCC vector extensions, compiled for AVX2 and for baseline x86-64 and
-// picked at load time). No fused multiply-add is used, so both builds and the one-at-a-time
+// time in SIMD lanes (GCC vector extensions, compiled for x86-64-v4, AVX2 and baseline x86-64
+// and picked at load time). No fused multiply-add is used, so every build and the one-at-a-time
 // twin give bitwise equal results. Bodies and constraints are flat arrays of floats, no
 // virtual calls, no allocation once the scratch arrays have grown.
 

@@ -2,8 +2,10 @@
 
 // What the wide (SIMD) kernels share: kWideLanes solver bodies gathered into one register per
 // field and scattered back, and the small vector helpers. Included by the wide kernels' files
-// only (contact_kernels_wide.cpp, pin_rows_wide.cpp), each compiled for AVX2 and for baseline
-// x86-64 and picked at load time; the helpers are always inlined into those clones.
+// only (contact_kernels_wide.cpp, pin_rows_wide.cpp), each compiled for x86-64-v4, AVX2 and
+// baseline x86-64 and picked at load time; the helpers are always inlined into those clones.
+// The registers stay eight floats wide: what x86-64-v4 (AVX-512) brings is twice the vector
+// registers, so the solve's temporaries stay out of the stack.
 
 #include <cstddef>
 
@@ -18,10 +20,10 @@
 #if defined(__SANITIZE_THREAD__)
 #define MINK_WIDE_KERNEL
 #else
-#define MINK_WIDE_KERNEL __attribute__((target_clones("avx2", "default")))
+#define MINK_WIDE_KERNEL __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 #endif
 
-// Always inlined: a call out of an AVX2 clone into a baseline copy would pass the vectors in
+// Always inlined: a call out of a wider clone into a baseline copy would pass the vectors in
 // another way than the clone expects.
 #define MINK_WIDE_INLINE __attribute__((always_inline)) inline
 
