@@ -8,12 +8,17 @@
 #include <bit>
 
 #include "joint_solver.hpp"
+#include "prefetch.hpp"
 #include "world_state.hpp"
 
 namespace mink {
 
 using detail::Body;
 using detail::Joint;
+
+namespace {
+constexpr std::size_t kJointAhead = 8;
+}  // namespace
 
 namespace detail {
 
@@ -184,6 +189,15 @@ void WorldState::prepare_joints() {
     tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 256,
                        [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
                          for (std::uint32_t k = begin; k < end; ++k) {
+                           // The bodies' lists, then what they hold, asked for ahead.
+                           if (k + kJointAhead < end) {
+                             const Body& ahead = bodies[solver_to_body[k + kJointAhead]];
+                             detail::prefetch_line(&ahead.joints);
+                           }
+                           if (k + kJointAhead / 2 < end) {
+                             const Body& ahead = bodies[solver_to_body[k + kJointAhead / 2]];
+                             if (!ahead.joints.empty()) detail::prefetch_line(ahead.joints.data());
+                           }
                            for (const std::uint32_t j : bodies[solver_to_body[k]].joints) {
                              joint_marks.mark(j, worker);
                            }
@@ -262,10 +276,25 @@ void WorldState::prepare_joints() {
   solver_params.resize(solver_bodies.size());
   joint_stages.set(&joints, &step_joints, &joint_color_begin);
   joint_stages.reset(step_joints.size());
+  // Joint records, then their bodies' lines that prepare_joint reads (the pose's and the
+  // centre of mass's), asked for ahead: records of a kilobyte and bodies scattered.
+  const auto prefetch_joint_ahead = [&](std::size_t k, std::size_t end) {
+    if (k + kJointAhead < end) {
+      detail::prefetch_bytes(&joints[joint_order[k + kJointAhead]], sizeof(Joint));
+    }
+    if (k + kJointAhead / 2 < end) {
+      const detail::JointBodies& jb = joint_bodies[joint_order[k + kJointAhead / 2]];
+      for (std::uint32_t b = 0; b < jb.count; ++b) {
+        detail::prefetch_line(&bodies[jb.body[b]].center);
+        detail::prefetch_line(&bodies[jb.body[b]].local_center);
+      }
+    }
+  };
   // Each joint's frame is its own, so they are made in parallel.
   tasks.parallel_for(static_cast<std::uint32_t>(step_joints.size()), 64,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
                        for (std::uint32_t k = begin; k < end; ++k) {
+                         prefetch_joint_ahead(k, end);
                          const std::uint32_t j = joint_order[k], i = joint_position[k];
                          if (!prepare_joint(j, i, first_own + joint_own_slots[i], h, soft, true)) {
                            joint_stages.gather(i, joints[j]);
@@ -282,6 +311,10 @@ void WorldState::prepare_joints() {
   }
   tasks.parallel_for(rows, 64, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
     for (std::uint32_t r = begin; r < end; ++r) {
+      if (r + kJointAhead < end) {
+        const std::uint32_t ahead = joint_stages.revolute_row_position(r + kJointAhead);
+        detail::prefetch_bytes(&joints[step_joints[ahead]], sizeof(Joint));
+      }
       const std::uint32_t position = joint_stages.revolute_row_position(r);
       joint_stages.fill_revolute_row(position, joints[step_joints[position]]);
     }
