@@ -32,11 +32,17 @@
 #                           figure on a busy machine; at 2 it is the work of both workers,
 #                           spinning included, not the time a step takes
 #      step_v3_ratios.csv   ours / Box2D v3 per scene, one column per setting and worker count
-#      step_v3_continuous.csv  case,workers,on_ns,off_ns,cost,v3_on_ns,v3_off_ns,v3_cost:
+#      step_v3_continuous.csv  case,workers,on_ns,off_ns,cost,phase_share,v3_on_ns,v3_off_ns,
+#                           v3_cost:
 #                           mink_matched against mink_matched_no_ccd, the median steps and
 #                           on / off - 1 (the share continuous collision adds), per scene and
 #                           worker count; and the same for Box2D v3 (box2d_v3 against
-#                           box2d_v3_no_ccd, its continuous collision off, when that ran)
+#                           box2d_v3_no_ccd, its continuous collision off, when that ran);
+#                           phase_share: the share of mink_matched's step its continuous
+#                           phase takes, measured within each run
+#      step_v3_phases.csv   case,workers,implementation,phase,mean_ms: the mean time per step
+#                           of each phase the engine reports (its own names; "step" is the
+#                           whole), over the rounds
 #      step_v3.png          those ratios as bars (gnuplot, bench/plot_step_v3.gp)
 #      step_v3_memory.csv   case,implementation,peak_kib: the peak resident memory of the
 #                           scene's process at the first worker count, the most of its rounds
@@ -166,7 +172,7 @@ for round in $(seq "$rounds"); do
         steps=$(steps_for "$scene")
         commands+=("$runner" "$scene" --workers="$workers" --implementation="$implementation"
           --sleep="$sleep_mode" --turn-ms="$turn_ms" --samples="$work/$scene.$workers.$implementation"
-          ${steps:+"--steps=$steps"})
+          --profile ${steps:+"--steps=$steps"})
       done
       status=0
       "$turns_binary" "${commands[@]}" >"$work/output" || status=$?
@@ -180,6 +186,7 @@ for round in $(seq "$rounds"); do
                      "  peak %6.1f MiB\n", round, f["scene"], f["workers"], f["implementation"],
                      f["median_ns"] / 1e6, f["cpu_median_ns"] / 1e6, f["peak_kib"] / 1024 }'
             ;;
+          phase\ *) echo "round=$round $line" >>"$work/phases" ;;
           *) if [ "$round" = 1 ] && [ "$workers" = "$first_workers" ]; then echo "$line"; fi ;;
         esac
       done <"$work/output"
@@ -280,12 +287,42 @@ write_ratios() {
 }
 write_ratios "$v3_csv" 1 >"$ratios_csv"
 
-# What continuous collision costs: the matched runs with it on against off.
+# The mean time per step of each phase each engine reports, over the rounds.
+phases_csv=$results_dir/step_v3_phases.csv
+awk -v scenes="$scenes" -v workers_list="$workers_list" -v implementations="$implementations" '
+  {
+    for (i = 1; i <= NF; ++i) { split($i, kv, "="); f[kv[1]] = kv[2] }
+    key = f["scene"] "," f["workers"] "," f["implementation"]
+    if (!((key "," f["name"]) in sum)) names[key] = names[key] " " f["name"]
+    sum[key "," f["name"]] += f["ms"]
+    ++n[key "," f["name"]]
+  }
+  END {
+    print "case,workers,implementation,phase,mean_ms"
+    ns = split(scenes, s, " ")
+    nw = split(workers_list, w, " ")
+    ni = split(implementations, m, " ")
+    for (i = 1; i <= ns; ++i) for (j = 1; j <= nw; ++j) for (k = 1; k <= ni; ++k) {
+      key = s[i] "," w[j] "," m[k]
+      np = split(names[key], p, " ")
+      for (q = 1; q <= np; ++q) printf "%s,%s,%.4f\n", key, p[q], sum[key "," p[q]] / n[key "," p[q]]
+    }
+  }' "$work/phases" >"$phases_csv"
+
+# What continuous collision costs: the matched runs with it on against off, and the share of
+# the step our continuous phase takes (from the phases above, within each run: free of what
+# differs between runs).
 continuous_csv=$results_dir/step_v3_continuous.csv
 awk -F, -v workers_list="$workers_list" -v scenes="$scenes" '
-  FNR > 1 { t[$1 "," $2 "," $3] = $4 }
+  FNR == 1 { ++file; next }
+  file == 1 {
+    if ($3 == "mink_matched" && $4 == "continuous") phase[$1 "," $2] = $5
+    if ($3 == "mink_matched" && $4 == "step") whole[$1 "," $2] = $5
+    next
+  }
+  { t[$1 "," $2 "," $3] = $4 }
   END {
-    print "case,workers,on_ns,off_ns,cost,v3_on_ns,v3_off_ns,v3_cost"
+    print "case,workers,on_ns,off_ns,cost,phase_share,v3_on_ns,v3_off_ns,v3_cost"
     nw = split(workers_list, w, " ")
     ns = split(scenes, s, " ")
     for (i = 1; i <= ns; ++i) {
@@ -295,13 +332,15 @@ awk -F, -v workers_list="$workers_list" -v scenes="$scenes" '
         v3_on = t[s[i] "," w[j] ",box2d_v3"]
         v3_off = t[s[i] "," w[j] ",box2d_v3_no_ccd"]
         v3_cost = v3_on != "" && v3_off != "" ? sprintf("%.4f", v3_on / v3_off - 1) : ""
+        key = s[i] "," w[j]
+        share = whole[key] > 0 ? sprintf("%.4f", phase[key] / whole[key]) : ""
         if (on != "" && off != "") {
-          printf "%s,%s,%s,%s,%.4f,%s,%s,%s\n", s[i], w[j], on, off, on / off - 1, v3_on, v3_off,
-                 v3_cost
+          printf "%s,%s,%s,%s,%.4f,%s,%s,%s,%s\n", s[i], w[j], on, off, on / off - 1, share, v3_on,
+                 v3_off, v3_cost
         }
       }
     }
-  }' "$v3_csv" >"$continuous_csv"
+  }' "$phases_csv" "$v3_csv" >"$continuous_csv"
 
 echo
 echo "Ours / Box2D v3 (median step time; below 1: ours is faster), $ratios_csv:"
@@ -310,7 +349,8 @@ echo
 echo "The same for CPU time (at 1 worker the time on a core of its own; $cpu_csv):"
 write_ratios "$cpu_csv" 0 | column -s, -t
 echo
-echo "What continuous collision costs (mink_matched / mink_matched_no_ccd - 1), $continuous_csv:"
+echo "What continuous collision costs (mink_matched / mink_matched_no_ccd - 1; phase_share:" \
+  "the continuous phase's share of the step in mink_matched), $continuous_csv:"
 column -s, -t "$continuous_csv"
 echo
 echo "Peak memory (KiB, $first_workers worker(s)), $memory_csv:"

@@ -189,8 +189,13 @@ int run(const Options& options, const RaceEngine& engine) {
       static_cast<int>(options.implementation.size()), options.implementation.data(), options.steps,
       times.size(), median(times), median(cpu_times), peak, base, counts.bodies, counts.shapes,
       counts.joints, counts.contacts);
+  // Each line names its run: the runs of a scene take turns on one output.
   for (const auto& [name, ms] : phases) {
-    std::printf("phase name=%s ms=%.4f\n", name.c_str(), ms / static_cast<double>(times.size()));
+    std::printf("phase scene=%.*s workers=%d implementation=%.*s name=%s ms=%.4f\n",
+                static_cast<int>(options.scene->name.size()), options.scene->name.data(),
+                options.workers, static_cast<int>(options.implementation.size()),
+                options.implementation.data(), name.c_str(),
+                ms / static_cast<double>(times.size()));
   }
   return 0;
 }

@@ -42,9 +42,8 @@ ProxyPair ordered(ProxyId x, ProxyId y) {
   return x < y ? ProxyPair{x, y} : ProxyPair{y, x};
 }
 
-// std::nextafter(x, -infinity), without the library call (a fast body's continuous query
-// makes two): the double below a positive one has the bit pattern one less, below a negative
-// one one more.
+// std::nextafter(x, -infinity), without the library call (every query makes two): the double
+// below a positive one has the bit pattern one less, below a negative one one more.
 Real below(Real x) {
   if (std::isnan(x) || x == -std::numeric_limits<Real>::infinity()) return x;
   if (x == 0) return -std::numeric_limits<Real>::denorm_min();
@@ -250,52 +249,16 @@ void SweepAndPrune::update_pairs(PairEvents& events, const Ranges& ranges) {
 }
 
 void SweepAndPrune::refresh_fixed() {
-  fixed_entries_.clear();
-  fixed_reach0_ = 0;
-  for (const Entry& e : entries_) {
-    if (e.is_fixed == 0) continue;
-    fixed_entries_.push_back(e);
-    fixed_reach0_ = std::max(fixed_reach0_, e.hi0 - e.lo0);
-  }
-  std::sort(fixed_entries_.begin(), fixed_entries_.end(), [](const Entry& x, const Entry& y) {
-    return x.lo0 != y.lo0 ? x.lo0 < y.lo0 : x.id < y.id;
-  });
-  const std::size_t count = fixed_entries_.size();
-  fixed_lo0_.resize(count);
-  for (std::size_t k = 0; k < count; ++k) fixed_lo0_[k] = fixed_entries_[k].lo0;
-  // As many buckets of lower bounds as entries, each starting where its first entry is.
-  fixed_bucket_start_.assign(count + 1, static_cast<std::uint32_t>(count));
-  if (count > 0) {
-    fixed_bucket_origin_ = fixed_lo0_.front();
-    const Real span = fixed_lo0_.back() - fixed_bucket_origin_;
-    fixed_bucket_scale_ = span > 0 ? static_cast<Real>(count) / span : 0;
-    for (std::size_t k = count; k-- > 0;) {
-      fixed_bucket_start_[fixed_bucket(fixed_lo0_[k])] = static_cast<std::uint32_t>(k);
+  fixed_boxes_.clear();
+  const auto gather = [&](const std::vector<Entry>& entries) {
+    for (const Entry& e : entries) {
+      if (e.is_fixed != 0) fixed_boxes_.push_back({e.lo0, e.hi0, e.lo1, e.hi1, e.id});
     }
-    for (std::size_t b = count; b-- > 0;) {
-      fixed_bucket_start_[b] = std::min(fixed_bucket_start_[b], fixed_bucket_start_[b + 1]);
-    }
-  }
+  };
+  gather(entries_);
+  gather(oversized_);
+  fixed_grid_.build(fixed_boxes_);
   fixed_stale_ = false;
-}
-
-// Which bucket x falls in: monotone in x, so an entry in an earlier bucket than x's lies
-// below x.
-std::size_t SweepAndPrune::fixed_bucket(Real x) const {
-  const Real t = (x - fixed_bucket_origin_) * fixed_bucket_scale_;
-  if (!(t > 0)) return 0;
-  const std::size_t last = fixed_lo0_.size() - 1;
-  return t >= static_cast<Real>(last) ? last : static_cast<std::size_t>(t);
-}
-
-// std::lower_bound's place for x among the fixed entries' lower bounds: from the start of x's
-// bucket, a few steps at most, where a binary search would branch unpredictably at every
-// step (continuous collision queries at scattered places).
-std::size_t SweepAndPrune::first_fixed_not_below(Real x) const {
-  if (fixed_lo0_.empty()) return 0;
-  std::size_t k = fixed_bucket_start_[fixed_bucket(x)];
-  while (k < fixed_lo0_.size() && fixed_lo0_[k] < x) ++k;
-  return k;
 }
 
 // Pairs that no longer overlap. Only a pair with a touched member can end, and testing it on
@@ -671,20 +634,9 @@ void SweepAndPrune::query_fixed(const Aabb& box, std::vector<ProxyId>& out) cons
   if (fixed_stale_) {
     sweep(q, found);
   } else {
-    // An entry overlapping q starts at most the largest fixed extent before it (a step below
-    // for each rounding: the extent's and the subtraction's).
-    const Real from = below(below(q.lo0 - fixed_reach0_ * (1 + kReachSlack)));
-    auto it = fixed_entries_.begin() + static_cast<std::ptrdiff_t>(first_fixed_not_below(from));
-    for (; it != fixed_entries_.end() && it->lo0 <= q.hi0; ++it) {
-      // overlap() without its branches (its first test is the loop's): most entries a scan
-      // meets lie beside q on the other axis, at no pattern a branch could learn.
-      const int hit = static_cast<int>(q.lo0 <= it->hi0) & static_cast<int>(it->lo1 <= q.hi1) &
-                      static_cast<int>(q.lo1 <= it->hi1);
-      if (hit != 0) found(*it);
-    }
-    for (const Entry& e : oversized_) {
-      if (overlap(e, q)) found(e);
-    }
+    fixed_grid_.query({q.lo0, q.hi0, q.lo1, q.hi1, 0}, [&](ProxyId id) {
+      if (touched_[id] == 0) out.push_back(id);
+    });
   }
   for (const ProxyId id : touched_ids_) {
     if ((touched_[id] & kDestroyed) == 0 && store_.is_fixed(id) && store_.fat(id).overlaps(box)) {

@@ -67,6 +67,8 @@ namespace {
 constexpr std::uint32_t kFastBodyAhead = 4;
 // A fast body's box this many times wider than the middle one's is scanned apart.
 constexpr Real kWideFactor = 8;
+// No body yet: the sweep loop's first shape finds its body's sweep.
+constexpr std::uint32_t kNoBody = ~std::uint32_t{0};
 // What a body may close on a chain segment in a step, as a share of its thinnest half-width,
 // for the speculative contact alone to hold it (Box2D v3's core fraction).
 constexpr Real kCoreFraction = 0.25;
@@ -506,8 +508,15 @@ void WorldState::solve_continuous() {
       std::sort(found.begin(), found.end());
       found.erase(std::unique(found.begin(), found.end()), found.end());
       const Real slow = fast.slow;
+      // A body's shapes lie side by side in `found` (shape indices of one body mostly are):
+      // its sweep, with its arc tangents, is found once for them.
+      std::uint32_t other_body = kNoBody;
+      Sweep other;
       for (const std::uint32_t index : found) {
-        const Sweep other = body_sweep(shapes[index].body);
+        if (shapes[index].body != other_body) {
+          other_body = shapes[index].body;
+          other = body_sweep(other_body);
+        }
         if (!fast.bullet && !is_still(other) &&
             travel_relative_to(fast.sweep, fast.extent, other) <= slow) {
           continue;

@@ -388,9 +388,10 @@ TEST(SweepAndPruneOracle, ClustersThatDriftApart) {
   expect_pairs_over(layout, 61, 64, 50);
 }
 
-// query_fixed starts its scan from buckets of the fixed entries' lower bounds: fixed sets of
-// one entry, of equal lower bounds, of clustered ones with a far outlier and of a ring, queried
-// below, above, between and across them, against the brute force.
+// query_fixed looks in a grid of the fixed entries: fixed sets of one entry, of equal lower
+// bounds, of clustered ones with a far outlier, of a ring, of a drum of boxes too large for
+// the bands, of one floor over many cells among small boxes, and of points all at one place,
+// queried below, above, between and across them, against the brute force.
 TEST(SweepAndPruneOracle, FixedQueriesOverEqualClusteredAndRingBounds) {
   std::mt19937_64 random(19);
   const std::vector<std::function<Aabb(int)>> layouts = {
@@ -404,6 +405,15 @@ TEST(SweepAndPruneOracle, FixedQueriesOverEqualClusteredAndRingBounds) {
         const double angle = i * 2 * 3.14159265358979 / 60;
         return box_at(Vec2(40 * std::cos(angle), 40 * std::sin(angle)), Vec2(1.2, 1.2));
       },
+      [](int i) {
+        const double angle = i * 2 * 3.14159265358979 / 60;
+        return box_at(Vec2(12 * std::cos(angle), 12 * std::sin(angle)), Vec2(6, 6));
+      },
+      [](int i) {
+        return i == 0 ? box_at(Vec2(0, -2), Vec2(50, 0.5))
+                      : box_at(Vec2(i % 8 * 0.7, i / 8 * 0.6), Vec2(0.05, 0.05));
+      },
+      [](int) { return box_at(Vec2(-1, 2), Vec2(0, 0)); },
   };
   for (std::size_t l = 0; l < layouts.size(); ++l) {
     mink::SweepAndPrune fast(0.1);
@@ -411,8 +421,9 @@ TEST(SweepAndPruneOracle, FixedQueriesOverEqualClusteredAndRingBounds) {
     mink::PairEvents events;
     const int count = l == 0 ? 1 : 60;
     for (int i = 0; i < count; ++i) {
-      fast.create_proxy(layouts[l](i), ProxyKind::static_body, static_cast<std::uint64_t>(i));
-      slow.create_proxy(layouts[l](i), ProxyKind::static_body, static_cast<std::uint64_t>(i));
+      const ProxyKind kind = i % 3 == 1 ? ProxyKind::kinematic : ProxyKind::static_body;
+      fast.create_proxy(layouts[l](i), kind, static_cast<std::uint64_t>(i));
+      slow.create_proxy(layouts[l](i), kind, static_cast<std::uint64_t>(i));
     }
     fast.create_proxy(box_at(Vec2(0, 0), Vec2(0.5, 0.5)), ProxyKind::moving, 1000);
     slow.create_proxy(box_at(Vec2(0, 0), Vec2(0.5, 0.5)), ProxyKind::moving, 1000);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "mink/broadphase/broadphase.hpp"
+#include "mink/broadphase/fixed_grid.hpp"
 #include "mink/broadphase/proxy_store.hpp"
 #include "mink/byte_stream.hpp"
 
@@ -133,9 +134,7 @@ class SweepAndPrune final : public Broadphase {
   bool sink(std::size_t i, std::size_t& shifts);
   void sort_changed();
   void rebuild();
-  std::size_t fixed_bucket(Real x) const;
-  std::size_t first_fixed_not_below(Real x) const;
-  /// Gathers fixed_entries_ from entries_.
+  /// Lays fixed_grid_ out from the fixed entries of entries_ and oversized_.
   void refresh_fixed();
   /// Also refreshes band_begin_, which every change of entries_ invalidates.
   void recompute_slots();
@@ -153,16 +152,11 @@ class SweepAndPrune final : public Broadphase {
   std::vector<Aabb> committed_;        ///< per id: fat box as of the last update
   std::vector<std::uint8_t> touched_;  ///< per id: Touch bits
   std::vector<ProxyId> touched_ids_;
-  /// The fixed entries of entries_ by lower bound on the sweep axis, and their largest extent
-  /// there, for query_fixed(): fixed obstacles are few among many moving boxes, which a sweep
-  /// of the bands would step over one by one. Stale (and not used) until the first update
-  /// after a fixed proxy changed or the array was laid out anew.
-  std::vector<Entry> fixed_entries_;
-  std::vector<Real> fixed_lo0_;  ///< their lower bounds, side by side for the search
-  /// Where each of as many even buckets of lower bounds as entries starts in fixed_entries_.
-  std::vector<std::uint32_t> fixed_bucket_start_;
-  Real fixed_bucket_origin_ = 0, fixed_bucket_scale_ = 0;
-  Real fixed_reach0_ = 0;
+  /// The fixed entries, for query_fixed(): fixed obstacles are few among many moving boxes,
+  /// which a sweep of the bands would step over one by one. Stale (and not used) until the
+  /// first update after a fixed proxy changed or the array was laid out anew.
+  FixedGrid fixed_grid_;
+  std::vector<FixedGrid::Box> fixed_boxes_;  ///< scratch for laying it out
   bool fixed_stale_ = true;
 
   // Scratch, kept to avoid allocating every step.
