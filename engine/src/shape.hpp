@@ -28,6 +28,10 @@ inline constexpr Fattening kBroadphaseFattening{0.05, 0.125, 0};
 struct Shape {
   ShapeGeometry geometry = Circle{};
   ShapeType type = ShapeType::polygon;
+  // Static sharp polygons only: 1 for each edge that another static polygon's edge covers
+  // exactly (a seam between tiles); empty when none is. See seam.cpp. Beside the geometry,
+  // as every manifold of a sharp polygon asks whether it is empty.
+  std::vector<std::uint8_t> internal_edges;
   // Tight box at the current pose, grown by the speculative margin; a fast body's shapes, after
   // a step its sweep found clear, keep theirs bare (finish_body), and say so.
   Aabb aabb;
@@ -44,9 +48,6 @@ struct Shape {
   std::uint32_t generation = 0;
   bool alive = false;
   std::uint64_t user_data = 0;
-  // Static sharp polygons only: 1 for each edge that another static polygon's edge covers
-  // exactly (a seam between tiles); empty when none is. See seam.cpp.
-  std::vector<std::uint8_t> internal_edges;
 };
 
 // Calls visit(point) for each point of the shape's core (a hull's vertices, a capsule's two

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstddef>
 #include <numbers>
+#include <span>
+#include <variant>
 
 #include "contact_kernels.hpp"
 #include "prefetch.hpp"
@@ -56,12 +58,17 @@ void prefetch_shape_list(const Body& b) {
   if (!b.shapes.empty()) prefetch_line(b.shapes.data());
 }
 
+// Finishing a body waits on four lines in a chain (record, shape list, shape, vertices):
+// the first is asked for this many bodies ahead.
+constexpr std::uint32_t kFinishAhead = 16;
+
 }  // namespace
 
-// What finishing the step of the body at solver index k + kPrefetchAhead reads of its record,
-// then half as far ahead its shape list, a quarter as far its shapes (geometry, box, proxy):
-// each stage's lines are asked for once the last stage's are in. `only`, if given, picks the
-// bodies (those with a nonzero entry).
+// What finishing the step of the body at solver index k + kFinishAhead reads of its record,
+// then half as far ahead its shape list, a quarter as far its shapes (geometry, box, proxy),
+// an eighth as far its polygons' vertices (the new boxes are made of them; they live apart
+// from the shape): each stage's lines are asked for once the last stage's are in. `only`, if
+// given, picks the bodies (those with a nonzero entry).
 void WorldState::prefetch_finish_ahead(std::size_t k, std::size_t end,
                                        const std::uint8_t* only) const {
   const auto ahead = [&](std::size_t distance) -> const Body* {
@@ -69,11 +76,19 @@ void WorldState::prefetch_finish_ahead(std::size_t k, std::size_t end,
     if (at >= end || (only != nullptr && only[at] == 0)) return nullptr;
     return &bodies[solver_to_body[at]];
   };
-  if (const Body* b = ahead(kPrefetchAhead)) prefetch_finish(*b);
-  if (const Body* b = ahead(kPrefetchAhead / 2)) prefetch_shape_list(*b);
-  if (const Body* b = ahead(kPrefetchAhead / 4)) {
+  if (const Body* b = ahead(kFinishAhead)) prefetch_finish(*b);
+  if (const Body* b = ahead(kFinishAhead / 2)) prefetch_shape_list(*b);
+  if (const Body* b = ahead(kFinishAhead / 4)) {
     for (const std::uint32_t s : b->shapes) {
       prefetch_bytes(&shapes[s], offsetof(Shape, proxy) + sizeof(ProxyId));
+    }
+  }
+  if (const Body* b = ahead(kFinishAhead / 8)) {
+    for (const std::uint32_t s : b->shapes) {
+      if (const auto* polygon = std::get_if<RoundedPolygon>(&shapes[s].geometry)) {
+        const std::span<const Vec2> vertices = polygon->hull.vertices();
+        prefetch_bytes(vertices.data(), std::min<std::size_t>(vertices.size_bytes(), 256));
+      }
     }
   }
 }
