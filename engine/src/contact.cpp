@@ -25,6 +25,8 @@ namespace {
 // How many contacts ahead the narrowphase asks for a contact's record (and half as many for
 // its bodies and shapes).
 constexpr std::uint32_t kCollideAhead = 8;
+// Awake bodies ahead of the one whose contacts are being marked.
+constexpr std::uint32_t kMarkAhead = 16;
 
 // Lists the contact in the body's contacts; returns where.
 std::uint32_t add_contact_to(Body& body, std::uint32_t contact, bool other_fixed) {
@@ -360,6 +362,16 @@ bool WorldState::update_manifold(Contact& c, detail::ContactImpulses& impulses) 
 }
 
 // Marks the body's contacts as the step's, among `worker`'s marks.
+// The marking loop reads, per awake body, its record's contact list and the list: the record's
+// line is asked for kMarkAhead bodies ahead, the list half as far.
+void WorldState::prefetch_contact_list_ahead(std::uint32_t k, std::uint32_t end) const {
+  if (k + kMarkAhead < end) detail::prefetch_line(&bodies[awake_list[k + kMarkAhead]].contacts);
+  if (k + kMarkAhead / 2 < end) {
+    const Body& ahead = bodies[awake_list[k + kMarkAhead / 2]];
+    if (!ahead.contacts.empty()) detail::prefetch_line(ahead.contacts.data());
+  }
+}
+
 void WorldState::mark_step_contacts(const Body& body, std::uint32_t worker) {
   for (const std::uint32_t ci : body.contacts) step_contact_marks.mark(ci, worker);
 }
@@ -424,6 +436,7 @@ void WorldState::collide() {
   tasks.parallel_for(static_cast<std::uint32_t>(awake_list.size()), 256,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
                        for (std::uint32_t k = begin; k < end; ++k) {
+                         prefetch_contact_list_ahead(k, end);
                          mark_step_contacts(bodies[awake_list[k]], worker);
                        }
                      });
@@ -438,11 +451,13 @@ void WorldState::collide() {
   tasks.parallel_for(static_cast<std::uint32_t>(step_contacts.size()), 64,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
                        for (std::uint32_t k = begin; k < end; ++k) {
-                         // Contacts, then their bodies and shapes, asked for ahead: records
-                         // scattered over memory, where the manifolds otherwise wait.
+                         // Contacts (and their impulses, kept apart), then their bodies and
+                         // shapes, asked for ahead: records scattered over memory, where the
+                         // manifolds otherwise wait.
                          if (k + kCollideAhead < end) {
-                           const Contact& ahead = contacts[step_contacts[k + kCollideAhead]];
-                           detail::prefetch_bytes(&ahead, sizeof(Contact));
+                           const std::uint32_t ahead = step_contacts[k + kCollideAhead];
+                           detail::prefetch_bytes(&contacts[ahead], sizeof(Contact));
+                           detail::prefetch_line(&contact_impulses[ahead]);
                          }
                          if (k + kCollideAhead / 2 < end) {
                            prefetch_pair(contacts[step_contacts[k + kCollideAhead / 2]]);
