@@ -59,8 +59,11 @@ void FixedGrid::build(const std::vector<Box>& boxes) {
     origin0_ = lo0;
     origin1_ = lo1;
     inverse_cell_ = 1 / cell;
+    // One cell at least, whatever the boxes: a snapshot's broadphase is laid out before its
+    // boxes are checked (and refused when upside down or not finite).
     const auto cells_over = [&](Real span) {
       const Real n = std::floor(span * inverse_cell_) + 1;
+      if (!(n >= 1)) return std::uint32_t{1};
       return static_cast<std::uint32_t>(std::min<Real>(n, static_cast<Real>(most_cells)));
     };
     cells0_ = cells_over(span0);
