@@ -362,16 +362,6 @@ bool WorldState::update_manifold(Contact& c, detail::ContactImpulses& impulses) 
 }
 
 // Marks the body's contacts as the step's, among `worker`'s marks.
-// The marking loop reads, per awake body, its record's contact list and the list: the record's
-// line is asked for kMarkAhead bodies ahead, the list half as far.
-void WorldState::prefetch_contact_list_ahead(std::uint32_t k, std::uint32_t end) const {
-  if (k + kMarkAhead < end) detail::prefetch_line(&bodies[awake_list[k + kMarkAhead]].contacts);
-  if (k + kMarkAhead / 2 < end) {
-    const Body& ahead = bodies[awake_list[k + kMarkAhead / 2]];
-    if (!ahead.contacts.empty()) detail::prefetch_line(ahead.contacts.data());
-  }
-}
-
 void WorldState::mark_step_contacts(const Body& body, std::uint32_t worker) {
   for (const std::uint32_t ci : body.contacts) step_contact_marks.mark(ci, worker);
 }
@@ -417,10 +407,7 @@ void WorldState::prefetch_hulls(const Contact& c) const {
   constexpr std::size_t kHullBytesAhead = 512;
   if (c.features_kept) return;
   for (const std::uint32_t s : {c.shape_a, c.shape_b}) {
-    if (const auto* polygon = std::get_if<RoundedPolygon>(&shapes[s].geometry)) {
-      const std::span<const Vec2> block = polygon->hull.storage();
-      detail::prefetch_bytes(block.data(), std::min(block.size_bytes(), kHullBytesAhead));
-    }
+    detail::prefetch_polygon(shapes[s], kHullBytesAhead);
   }
 }
 
@@ -436,7 +423,10 @@ void WorldState::collide() {
   tasks.parallel_for(static_cast<std::uint32_t>(awake_list.size()), 256,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
                        for (std::uint32_t k = begin; k < end; ++k) {
-                         prefetch_contact_list_ahead(k, end);
+                         detail::prefetch_list_ahead(
+                             k, end, kMarkAhead, [&](std::size_t i) -> const auto& {
+                               return bodies[awake_list[i]].contacts;
+                             });
                          mark_step_contacts(bodies[awake_list[k]], worker);
                        }
                      });

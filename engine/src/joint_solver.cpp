@@ -190,14 +190,10 @@ void WorldState::prepare_joints() {
                        [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
                          for (std::uint32_t k = begin; k < end; ++k) {
                            // The bodies' lists, then what they hold, asked for ahead.
-                           if (k + kJointAhead < end) {
-                             const Body& ahead = bodies[solver_to_body[k + kJointAhead]];
-                             detail::prefetch_line(&ahead.joints);
-                           }
-                           if (k + kJointAhead / 2 < end) {
-                             const Body& ahead = bodies[solver_to_body[k + kJointAhead / 2]];
-                             if (!ahead.joints.empty()) detail::prefetch_line(ahead.joints.data());
-                           }
+                           detail::prefetch_list_ahead(
+                               k, end, kJointAhead, [&](std::size_t i) -> const auto& {
+                                 return bodies[solver_to_body[i]].joints;
+                               });
                            for (const std::uint32_t j : bodies[solver_to_body[k]].joints) {
                              joint_marks.mark(j, worker);
                            }

@@ -22,4 +22,18 @@ namespace mink::detail {
   prefetch_line(bytes + size - 1);
 }
 
+// For a loop over records scattered in memory, each holding a list it walks (a body's
+// contacts, its joints): asks for the line holding the list of the record `ahead` steps on,
+// and for the list itself of the record half as far, once that line is in. `list_at(i)` is
+// the list of step i.
+template <typename ListAt>
+[[gnu::always_inline]] inline void prefetch_list_ahead(std::size_t k, std::size_t end,
+                                                       std::size_t ahead, ListAt&& list_at) {
+  if (k + ahead < end) prefetch_line(&list_at(k + ahead));
+  if (k + ahead / 2 < end) {
+    const auto& list = list_at(k + ahead / 2);
+    if (!list.empty()) prefetch_line(list.data());
+  }
+}
+
 }  // namespace mink::detail

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -12,6 +13,7 @@
 #include "mink/broadphase/proxy_store.hpp"
 #include "mink/engine/shape_def.hpp"
 #include "mink/narrowphase/shape_geometry.hpp"
+#include "prefetch.hpp"
 
 namespace mink::detail {
 
@@ -49,6 +51,15 @@ struct Shape {
   bool alive = false;
   std::uint64_t user_data = 0;
 };
+
+// Asks for the first `max_bytes` of a polygon's arrays (its vertices come first), which live
+// apart from the shape record; nothing for other kinds.
+inline void prefetch_polygon(const Shape& shape, std::size_t max_bytes) {
+  if (const auto* polygon = std::get_if<RoundedPolygon>(&shape.geometry)) {
+    const std::span<const Vec2> block = polygon->hull.storage();
+    prefetch_bytes(block.data(), std::min(block.size_bytes(), max_bytes));
+  }
+}
 
 // Calls visit(point) for each point of the shape's core (a hull's vertices, a capsule's two
 // centres, ...): every shape is its core grown by its radius.

@@ -5,8 +5,6 @@
 #include <cmath>
 #include <cstddef>
 #include <numbers>
-#include <span>
-#include <variant>
 
 #include "contact_kernels.hpp"
 #include "prefetch.hpp"
@@ -84,12 +82,7 @@ void WorldState::prefetch_finish_ahead(std::size_t k, std::size_t end,
     }
   }
   if (const Body* b = ahead(kFinishAhead / 8)) {
-    for (const std::uint32_t s : b->shapes) {
-      if (const auto* polygon = std::get_if<RoundedPolygon>(&shapes[s].geometry)) {
-        const std::span<const Vec2> vertices = polygon->hull.vertices();
-        prefetch_bytes(vertices.data(), std::min<std::size_t>(vertices.size_bytes(), 256));
-      }
-    }
+    for (const std::uint32_t s : b->shapes) prefetch_polygon(shapes[s], 256);
   }
 }
 

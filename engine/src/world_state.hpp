@@ -211,7 +211,6 @@ struct WorldState {
   void update_pairs();
   // Marks the body's contacts for this step; collect_step_contacts lists the marked ones.
   void mark_step_contacts(const detail::Body& body, std::uint32_t worker = 0);
-  void prefetch_contact_list_ahead(std::uint32_t k, std::uint32_t end) const;
   void collect_step_contacts();
   bool update_manifold(detail::Contact& contact, detail::ContactImpulses& impulses) const;
   void collide();

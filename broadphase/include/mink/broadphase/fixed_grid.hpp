@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -82,8 +83,8 @@ void FixedGrid::query(const Box& q, Found&& found) const {
       for (std::uint32_t r = cell_begin_[cell]; r < cell_begin_[cell + 1]; ++r) {
         const Placed& p = boxes_[refs_[r]];
         // A box in several of the query's cells is reported from the first of them.
-        const bool first_shared = (p.cell0 > first0 ? p.cell0 : first0) == c0 &&
-                                  (p.cell1 > first1 ? p.cell1 : first1) == c1;
+        const bool first_shared =
+            std::max(p.cell0, first0) == c0 && std::max(p.cell1, first1) == c1;
         if (first_shared && overlaps(p.box, q)) found(p.box.id);
       }
     }
