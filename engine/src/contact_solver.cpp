@@ -221,6 +221,7 @@ void ContactSolver::impulses(std::uint32_t index, SolverReal normal[2],
 // namespace: ContactSolver::Stage, a member of a class with linkage, holds one.
 enum class StageKind : std::uint8_t {
   integrate_velocities,
+  joint_chains_warm_start,
   joint_warm_start,
   joint_chains_solve,
   joint_chains_relax,
@@ -293,14 +294,15 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
       stages_.push_back({kind, c, first, last, size});
     }
   };
-  stages_.push_back({StageKind::integrate_velocities, 0, 0, body_count, split(body_count, 64)});
-  joint_stages(StageKind::joint_warm_start);
-  colour_stages(StageKind::warm_start);
   // The chains' paths are independent of each other, so they are split over the workers.
   const std::uint32_t paths = with_joints ? joints->chain_paths() : 0;
   const auto chain_stage = [&](StageKind kind) {
     if (paths > 0) stages_.push_back({kind, 0, 0, paths, split(paths, 4)});
   };
+  stages_.push_back({StageKind::integrate_velocities, 0, 0, body_count, split(body_count, 64)});
+  chain_stage(StageKind::joint_chains_warm_start);
+  joint_stages(StageKind::joint_warm_start);
+  colour_stages(StageKind::warm_start);
   for (int i = 0; with_joints && i < settings.joint_iterations; ++i) {
     chain_stage(StageKind::joint_chains_solve);
     joint_stages(StageKind::joint_solve);
@@ -364,6 +366,9 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
         return;
       case StageKind::integrate_positions:
         integrate_positions(x.bodies.subspan(begin, end - begin), x.settings->h);
+        return;
+      case StageKind::joint_chains_warm_start:
+        x.joints->warm_start_chains(body_data, begin, end);
         return;
       case StageKind::joint_warm_start:
         x.joints->warm_start(body_data, begin, end);

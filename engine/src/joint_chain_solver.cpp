@@ -150,6 +150,14 @@ namespace {
 constexpr Real kRedundantPivot = 1e-12;
 }  // namespace
 
+void JointChainSolver::warm_start(IdPool<Joint>& joints, SolverBody* bodies, std::uint32_t first,
+                                  std::uint32_t last) {
+  for (std::uint32_t i = path_begin_[first]; i < path_begin_[last]; ++i) {
+    const Joint& joint = joints[chain_joints_[i]];
+    warm_start_point(bodies, joint.frame, std::get<RevoluteJoint>(joint.kind).linear_impulse, 0);
+  }
+}
+
 void JointChainSolver::solve(IdPool<Joint>& joints, SolverBody* bodies, bool use_bias,
                              std::uint32_t first, std::uint32_t last) {
   for (std::uint32_t p = first; p < last; ++p) {

@@ -33,6 +33,10 @@ class JointChainSolver {
   // point row). A revolute joint's `direct` must be false until then.
   void build(IdPool<Joint>& joints, const std::vector<std::uint32_t>& order,
              std::span<const JointEnds> ends, bool enabled);
+  // Warm starts the point rows of paths [first, last) with their impulses (a chained joint's
+  // angle rows warm start their own); as solve(), in any split over workers.
+  void warm_start(IdPool<Joint>& joints, SolverBody* bodies, std::uint32_t first,
+                  std::uint32_t last);
   // Solves paths [first, last). Paths share no moving body (a body is in at most two of the
   // chained joints, both of one path) and each joint has its own copies of fixed bodies, so
   // any split of the paths over workers gives the same bits.

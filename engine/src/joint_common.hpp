@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <type_traits>
 
 #include "contact_solver.hpp"
 #include "mink/engine/debug_draw.hpp"
@@ -90,18 +91,61 @@ inline Vec2 delta_position(const SolverBody& b) {
 inline Rotation delta_rotation(const SolverBody& b) {
   return {b.qc, b.qs};
 }
+// These pass registers by value, always inlined into the wide kernels' clones (wide_body.hpp):
+// the note GCC gives on their calling convention without AVX does not concern them.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+// The few operations the rows in the solver's precision need that a number and a register of
+// kWideLanes numbers (a GCC vector) spell differently, so one function of the number type runs
+// on both and gives the same bits. Vector comparisons give lane masks, which `?:` selects by.
+template <typename T>
+__attribute__((always_inline)) inline T lane_abs(T x) {
+  if constexpr (std::is_floating_point_v<T>) {
+    return std::abs(x);
+  } else {
+    typedef std::int32_t Bits __attribute__((vector_size(sizeof(T))));
+    Bits bits;
+    __builtin_memcpy(&bits, &x, sizeof x);
+    bits &= 0x7fffffff;
+    __builtin_memcpy(&x, &bits, sizeof x);
+    return x;
+  }
+}
+// Whether the sign bit is set (-0 included), as a bool or a lane mask.
+template <typename T>
+__attribute__((always_inline)) inline auto lane_negative(T x) {
+  if constexpr (std::is_floating_point_v<T>) {
+    return std::signbit(x);
+  } else {
+    typedef std::int32_t Bits __attribute__((vector_size(sizeof(T))));
+    Bits bits;
+    __builtin_memcpy(&bits, &x, sizeof x);
+    return bits < 0;
+  }
+}
+// x rounded to the nearest whole number, ties to even, for |x| < 2^22: the sum with 1.5 * 2^23
+// keeps no fraction.
+template <typename T>
+__attribute__((always_inline)) inline T lane_round(T x) {
+  constexpr SolverReal shift = 12582912.0f;
+  return (x + shift) - shift;
+}
+
 // atan2(y, x) in the solver's precision, in [-pi, pi]: a polynomial in the ratio of the smaller
 // coordinate to the larger (fitted here for relative error, at most 9e-8 before rounding), then
 // the octant: within two ulps of the exact angle. The rows of a ragdoll's limits and springs take
 // one every pass, where the C library's atan2f cost a tenth of rain's step; and a polynomial gives
-// the same bits with every C library, which atan2f need not.
-inline SolverReal solver_atan2(SolverReal y, SolverReal x) {
-  const SolverReal ax = std::abs(x), ay = std::abs(y);
-  const bool steep = ay > ax;
-  const SolverReal larger = steep ? ay : ax, smaller = steep ? ax : ay;
-  if (!(larger > 0)) return larger == 0 ? SolverReal{0} : x + y;  // the origin; NaN stays NaN
-  const SolverReal t = smaller / larger, s = t * t;
-  SolverReal p = -0.004780914322f;
+// the same bits with every C library, which atan2f need not. `T`: SolverReal, or a register of
+// them (the wide rows), selected lane by lane rather than branched.
+template <typename T>
+__attribute__((always_inline)) inline T lane_atan2(T y, T x) {
+  const T zero{};
+  const T ax = lane_abs(x), ay = lane_abs(y);
+  const auto steep = ay > ax;
+  const T larger = steep ? ay : ax, smaller = steep ? ax : ay;
+  const T t = smaller / larger, s = t * t;
+  T p = zero - 0.004780914322f;
   p = p * s + 0.02455874342f;
   p = p * s - 0.05990696222f;
   p = p * s + 0.09942913973f;
@@ -109,11 +153,18 @@ inline SolverReal solver_atan2(SolverReal y, SolverReal x) {
   p = p * s + 0.1997138446f;
   p = p * s - 0.3333209411f;
   p = p * s + 0.9999999115f;
-  SolverReal angle = t * p;
-  if (steep) angle = static_cast<SolverReal>(std::numbers::pi / 2) - angle;
-  if (x < 0) angle = static_cast<SolverReal>(std::numbers::pi) - angle;
-  return std::signbit(y) ? -angle : angle;
+  T angle = t * p;
+  angle = steep ? (zero + static_cast<SolverReal>(std::numbers::pi / 2)) - angle : angle;
+  angle = x < zero ? (zero + static_cast<SolverReal>(std::numbers::pi)) - angle : angle;
+  angle = lane_negative(y) ? zero - angle : angle;
+  // The origin gives 0, and NaN stays NaN.
+  return larger > zero ? angle : (larger == zero ? zero : x + y);
 }
+inline SolverReal solver_atan2(SolverReal y, SolverReal x) {
+  return lane_atan2(y, x);
+}
+
+#pragma GCC diagnostic pop
 
 // The body's rotation since the step began, as an angle counting whole turns: (qc, qs) gives
 // it exactly up to whole turns, the summed substep angle tells how many. A substep may turn
@@ -141,6 +192,27 @@ inline Real relative_turn(const SolverBody& a, const SolverBody& b) {
   if (std::abs(turned) <= Real{1.5}) return exact;
   return exact + two_pi * std::round((turned - exact) / two_pi);
 }
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+// relative_turn() in the solver's precision throughout, for a SolverBody or kWideLanes of them
+// a field per register (the wide revolute rows): the whole turns from a rounding that gives
+// zero where they turned less than a quarter turn apart, so no lane needs a branch.
+template <typename Body>
+__attribute__((always_inline)) inline auto solver_relative_turn(const Body& a, const Body& b) {
+  using T = decltype(Body::qc);
+  constexpr SolverReal two_pi = 2 * std::numbers::pi, inv_two_pi = 1 / (2 * std::numbers::pi);
+  const T zero{};
+  const T c = a.qc * b.qc + a.qs * b.qs;
+  const T s = a.qc * b.qs - a.qs * b.qc;
+  const T exact = lane_atan2(s, c);
+  const T turned = b.turn - a.turn;
+  const T whole = lane_round((turned - exact) * inv_two_pi);
+  return lane_abs(turned) <= zero + SolverReal{1.5} ? exact : exact + two_pi * whole;
+}
+
+#pragma GCC diagnostic pop
 
 // Applies impulse `p` at offset `r` (and angular impulse `l`) to B and the opposite to A.
 // `Frame`: a JointFrame, or a row's frame (joint_rows.hpp), which holds the same fields.

@@ -45,14 +45,6 @@ void set_anchors(JointFrame& frame, const Vec2& local_anchor_a, const Vec2& loca
   frame.delta_center = b.center - a.center;
 }
 
-PointRowFrame point_row_frame(const JointFrame& frame) {
-  return {{frame.bodies[0], frame.bodies[1]},
-          frame.anchor_a,
-          frame.anchor_b,
-          frame.delta_center,
-          frame.soft};
-}
-
 template <typename Frame>
 PinRow pin_row(const Frame& frame, const Vec2& impulse) {
   const auto f = [](Real x) { return static_cast<SolverReal>(x); };
@@ -123,10 +115,6 @@ template CurrentAnchors current_anchors(const JointFrame&, const SolverBody&, co
 template void warm_start_point(SolverBody*, const JointFrame&, const Vec2&, Real);
 template PinRow pin_row(const JointFrame&, const Vec2&);
 template void solve_point(SolverBody&, SolverBody&, const JointFrame&, bool, Vec2&);
-template CurrentAnchors current_anchors(const RevoluteRowFrame&, const SolverBody&,
-                                        const SolverBody&);
-template void warm_start_point(SolverBody*, const RevoluteRowFrame&, const Vec2&, Real);
-template void solve_point(SolverBody&, SolverBody&, const RevoluteRowFrame&, bool, Vec2&);
 
 void solve_point_spring(SolverBody& a, SolverBody& b, const JointFrame& frame,
                         const Softness& spring, Vec2& impulse) {
@@ -205,15 +193,9 @@ void solve_angular_limits(SolverBody& a, SolverBody& b, const Frame& frame, Real
 
 template void solve_angular_spring(SolverBody&, SolverBody&, const JointFrame&, Real,
                                    const Softness&, Real, Real&);
-template void solve_angular_spring(SolverBody&, SolverBody&, const RevoluteRowFrame&, Real,
-                                   const Softness&, Real, Real&);
 template void solve_angular_motor(SolverBody&, SolverBody&, const JointFrame&, Real,
                                   const JointMotor&, Real&);
-template void solve_angular_motor(SolverBody&, SolverBody&, const RevoluteRowFrame&, Real,
-                                  const JointMotor&, Real&);
 template void solve_angular_limits(SolverBody&, SolverBody&, const JointFrame&, Real, Real,
-                                   const JointLimit&, bool, Real&, Real&);
-template void solve_angular_limits(SolverBody&, SolverBody&, const RevoluteRowFrame&, Real, Real,
                                    const JointLimit&, bool, Real&, Real&);
 
 AxialRow make_axial_row(const JointFrame& frame, const CurrentAnchors& anchors, const Vec2& axis) {

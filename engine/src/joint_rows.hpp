@@ -27,29 +27,12 @@ void drop_switched_off(Kind& joint) {
 // Sets the frame's anchors (from each centre of mass, world-rotated) from body-local anchors.
 void set_anchors(JointFrame& frame, const Vec2& local_anchor_a, const Vec2& local_anchor_b);
 
-// What a point row reads of a joint's frame, named as a JointFrame's fields, so the point
-// row's functions below take either and compute the same bits; the rows the solver keeps in
-// solve order (a joint's record is a kilobyte a large net would drag through the cache three
-// times a substep) hold it.
-struct PointRowFrame {
-  std::array<JointBody, 2> bodies{};
-  Vec2 anchor_a{0, 0}, anchor_b{0, 0}, delta_center{0, 0};
-  Softness soft;
-};
-PointRowFrame point_row_frame(const JointFrame& frame);
-
-// What a revolute joint's rows read of its frame.
-struct RevoluteRowFrame : PointRowFrame {
-  Real h = 0, inv_h = 0;
-  Real coordinate_a = 0;
-};
-
 // The anchors now: their offsets from the centres of mass, and B's anchor minus A's.
 struct CurrentAnchors {
   Vec2 ra{0, 0}, rb{0, 0}, separation{0, 0};
 };
-// `Frame`, here and below: a JointFrame, or a row's frame (RevoluteRowFrame) where it holds
-// what the function reads.
+// `Frame`, here and below: a JointFrame, or what holds the fields of one that the function
+// reads.
 template <typename Frame>
 CurrentAnchors current_anchors(const Frame& frame, const SolverBody& a, const SolverBody& b);
 

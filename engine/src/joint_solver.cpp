@@ -43,12 +43,16 @@ std::size_t JointStages::build_chains(bool enabled) {
   chains_.build(*joints_, *order_, ends_, enabled);
   chained_pins_.clear();
   for (const std::uint32_t position : chains_.chain_positions()) {
+    // A chain solves the point row; a chained joint's angle rows, where it has any, stay rows.
     if (kind_[position] == RowKind::pin) chained_pins_.push_back(position);
-    kind_[position] = RowKind::record;
+    kind_[position] =
+        kind_[position] == RowKind::revolute ? RowKind::revolute_angles : RowKind::chained;
   }
   revolute_positions_.clear();
   for (std::uint32_t position = 0; position < kind_.size(); ++position) {
-    if (kind_[position] != RowKind::revolute) continue;
+    if (kind_[position] != RowKind::revolute && kind_[position] != RowKind::revolute_angles) {
+      continue;
+    }
     row_slot_[position] = static_cast<std::uint32_t>(revolute_positions_.size());
     revolute_positions_.push_back(position);
   }
@@ -61,56 +65,86 @@ void JointStages::lay_out(bool wide, TaskRunner& tasks) {
   const std::size_t colors = color_begin.size() - 1;  // the overflow last
   units_.clear();
   wide_pins_.clear();
+  wide_revolutes_.clear();
   unit_begin_.assign(colors + 1, 0);
-  wide_positions_.clear();
+  wide_pin_positions_.clear();
+  wide_revolute_positions_.clear();
+  // A colour's joints of one kind kWideLanes at a time into `rows`, each unit a wide row; a
+  // lane left unused reads the first lane's joint.
+  const auto batch = [&](auto& rows, std::vector<std::uint32_t>& positions, std::uint32_t unit,
+                         std::uint32_t first, std::uint32_t last, RowKind kind) {
+    std::uint32_t lane = 0;
+    for (std::uint32_t position = first; position < last; ++position) {
+      if (kind_[position] != kind) continue;
+      if (lane == 0) {
+        units_.push_back(unit | static_cast<std::uint32_t>(rows.size()));
+        rows.emplace_back();
+        positions.insert(positions.end(), kWideLanes, position);
+      }
+      const auto at = static_cast<std::uint32_t>((rows.size() - 1) * kWideLanes + lane);
+      wide_lane_[position] = at;
+      positions[at] = position;
+      ++rows.back().lanes;
+      lane = (lane + 1) % kWideLanes;
+    }
+  };
   for (std::size_t c = 0; c < colors; ++c) {
     const bool overflow = c + 1 == colors;
     const std::uint32_t first = color_begin[c], last = color_begin[c + 1];
     if (wide && !overflow) {
-      std::uint32_t lane = 0;
-      for (std::uint32_t position = first; position < last; ++position) {
-        if (kind_[position] != RowKind::pin) continue;
-        if (lane == 0) {
-          units_.push_back(kWideUnit | static_cast<std::uint32_t>(wide_pins_.size()));
-          wide_pins_.emplace_back();
-          // A lane left unused reads the first lane's pin.
-          wide_positions_.insert(wide_positions_.end(), kWideLanes, position);
-        }
-        const auto at = static_cast<std::uint32_t>((wide_pins_.size() - 1) * kWideLanes + lane);
-        pin_lane_[position] = at;
-        wide_positions_[at] = position;
-        ++wide_pins_.back().lanes;
-        lane = (lane + 1) % kWideLanes;
-      }
+      batch(wide_pins_, wide_pin_positions_, kWidePinUnit, first, last, RowKind::pin);
+      const std::size_t with_point = wide_revolutes_.size();
+      batch(wide_revolutes_, wide_revolute_positions_, kWideRevoluteUnit, first, last,
+            RowKind::revolute);
+      const std::size_t without_point = wide_revolutes_.size();
+      batch(wide_revolutes_, wide_revolute_positions_, kWideRevoluteUnit, first, last,
+            RowKind::revolute_angles);
+      for (std::size_t r = with_point; r < without_point; ++r) wide_revolutes_[r].point = true;
     }
     for (std::uint32_t position = first; position < last; ++position) {
-      if (pin_lane_[position] == kNoLane) units_.push_back(position);
+      // A chained pin is all its chain's: nothing of it is solved one at a time.
+      if (wide_lane_[position] == kNoLane && kind_[position] != RowKind::chained) {
+        units_.push_back(position);
+      }
     }
     unit_begin_[c + 1] = static_cast<std::uint32_t>(units_.size());
   }
-  // Each wide row's lanes from its pins.
+  // Each wide row's lanes from its joints' rows.
   tasks.parallel_for(static_cast<std::uint32_t>(wide_pins_.size()), 32,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
                        for (std::uint32_t r = begin; r < end; ++r) {
                          WidePinRows& row = wide_pins_[r];
                          for (int lane = 0; lane < kWideLanes; ++lane) {
-                           pack_pin(row, lane, pins_[wide_positions_[r * kWideLanes + lane]]);
+                           pack_pin(row, lane, pins_[wide_pin_positions_[r * kWideLanes + lane]]);
+                         }
+                       }
+                     });
+  tasks.parallel_for(static_cast<std::uint32_t>(wide_revolutes_.size()), 16,
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                       for (std::uint32_t r = begin; r < end; ++r) {
+                         WideRevoluteRows& row = wide_revolutes_[r];
+                         for (int lane = 0; lane < kWideLanes; ++lane) {
+                           const std::uint32_t position =
+                               wide_revolute_positions_[r * kWideLanes + lane];
+                           pack_revolute(row, lane, revolute_rows_[row_slot_[position]]);
                          }
                        }
                      });
 }
 
 void JointStages::fill_revolute_row(std::uint32_t position, const Joint& joint) {
-  fill_row(revolute_rows_[row_slot_[position]], std::get<RevoluteJoint>(joint.kind), joint.frame);
+  revolute_rows_[row_slot_[position]] =
+      revolute_row(std::get<RevoluteJoint>(joint.kind), joint.frame);
 }
 
 void JointStages::store_row(std::uint32_t position, Joint& joint) const {
+  const std::uint32_t lane = wide_lane_[position];
   switch (kind_[position]) {
     case RowKind::record:
+    case RowKind::chained:
       return;
     case RowKind::pin: {
       Vec2& impulse = std::get<RevoluteJoint>(joint.kind).linear_impulse;
-      const std::uint32_t lane = pin_lane_[position];
       if (lane == kNoLane) {
         impulse = Vec2(pins_[position].impulse_x, pins_[position].impulse_y);
       } else {
@@ -120,25 +154,35 @@ void JointStages::store_row(std::uint32_t position, Joint& joint) const {
       return;
     }
     case RowKind::revolute:
-      detail::store_row(revolute_rows_[row_slot_[position]], std::get<RevoluteJoint>(joint.kind));
+    case RowKind::revolute_angles: {
+      RevoluteRow row = revolute_rows_[row_slot_[position]];
+      if (lane != kNoLane) {
+        read_impulses(wide_revolutes_[lane / kWideLanes], static_cast<int>(lane % kWideLanes), row);
+      }
+      detail::store_row(row, std::get<RevoluteJoint>(joint.kind));
       return;
+    }
   }
 }
 
 void JointStages::warm_start(SolverBody* bodies, std::uint32_t begin, std::uint32_t end) {
   for (std::uint32_t u = begin; u < end; ++u) {
     const std::uint32_t i = units_[u];
-    if ((i & kWideUnit) != 0) {
-      const WidePinRows* row = &wide_pins_[i & ~kWideUnit];
+    if ((i & kWidePinUnit) != 0) {
+      const WidePinRows* row = &wide_pins_[i & kUnitIndex];
       warm_start_pins_wide(bodies, row, row + 1);
+      continue;
+    }
+    if ((i & kWideRevoluteUnit) != 0) {
+      warm_start_revolutes_wide(bodies, wide_revolutes_[i & kUnitIndex]);
       continue;
     }
     if (kind_[i] == RowKind::pin) {
       warm_start_pin(bodies, pins_[i]);
       continue;
     }
-    if (kind_[i] == RowKind::revolute) {
-      detail::warm_start(revolute_rows_[row_slot_[i]], bodies);
+    if (kind_[i] == RowKind::revolute || kind_[i] == RowKind::revolute_angles) {
+      warm_start_revolute(bodies, revolute_rows_[row_slot_[i]]);
       continue;
     }
     Joint& joint = (*joints_)[(*order_)[i]];
@@ -153,20 +197,28 @@ void JointStages::solve_chains(SolverBody* bodies, bool use_bias, std::uint32_t 
   chains_.solve(*joints_, bodies, use_bias, first, last);
 }
 
+void JointStages::warm_start_chains(SolverBody* bodies, std::uint32_t first, std::uint32_t last) {
+  chains_.warm_start(*joints_, bodies, first, last);
+}
+
 void JointStages::solve(SolverBody* bodies, bool use_bias, std::uint32_t begin, std::uint32_t end) {
   for (std::uint32_t u = begin; u < end; ++u) {
     const std::uint32_t i = units_[u];
-    if ((i & kWideUnit) != 0) {
-      WidePinRows* row = &wide_pins_[i & ~kWideUnit];
+    if ((i & kWidePinUnit) != 0) {
+      WidePinRows* row = &wide_pins_[i & kUnitIndex];
       solve_pins_wide(bodies, row, row + 1, use_bias);
+      continue;
+    }
+    if ((i & kWideRevoluteUnit) != 0) {
+      solve_revolutes_wide(bodies, wide_revolutes_[i & kUnitIndex], use_bias);
       continue;
     }
     if (kind_[i] == RowKind::pin) {
       solve_pin(bodies, pins_[i], use_bias);
       continue;
     }
-    if (kind_[i] == RowKind::revolute) {
-      detail::solve(revolute_rows_[row_slot_[i]], bodies, use_bias);
+    if (kind_[i] == RowKind::revolute || kind_[i] == RowKind::revolute_angles) {
+      solve_revolute(bodies, revolute_rows_[row_slot_[i]], use_bias);
       continue;
     }
     Joint& joint = (*joints_)[(*order_)[i]];

@@ -7,15 +7,6 @@
 
 namespace mink::detail {
 
-namespace {
-
-MINK_WIDE_INLINE void scatter_lanes(SolverBody* bodies, const std::int32_t* index,
-                                    const WideBody& w, std::int32_t lanes) {
-  scatter_where(bodies, index, w, [&](int lane) { return lane < lanes; });
-}
-
-}  // namespace
-
 MINK_WIDE_KERNEL void warm_start_pins_wide(SolverBody* bodies, const WidePinRows* begin,
                                            const WidePinRows* end) {
   for (const WidePinRows* r = begin; r != end; ++r) {

@@ -35,73 +35,61 @@ void prepare_pin(RevoluteJoint& joint, JointFrame& frame) {
 namespace {
 
 // What the angle's rows (spring, motor, limits) hold together.
-template <typename Joint>
-Real angular_impulse(const Joint& joint) {
+Real angular_impulse(const RevoluteJoint& joint) {
   return joint.spring_impulse + joint.motor_impulse + joint.lower_impulse - joint.upper_impulse;
-}
-
-// The rows, on a joint's record and frame or on its row's copies of them.
-template <typename Joint, typename Frame>
-void warm_start_rows(const Joint& joint, const Frame& frame, SolverBody* bodies) {
-  warm_start_point(bodies, frame, joint.linear_impulse, angular_impulse(joint));
-}
-
-template <typename Joint, typename Frame>
-void solve_rows(Joint& joint, const Frame& frame, SolverBody* bodies, bool use_bias) {
-  SolverBody& a = bodies[frame.bodies[0].solver];
-  SolverBody& b = bodies[frame.bodies[1].solver];
-  if (joint.angle_rows) {
-    const auto& def = joint.def;
-    // The angle only where a row needs it (two arc tangents a substep, for every joint of a
-    // large net otherwise), once: the rows change velocities, not the angle.
-    const bool needs_angle = def.spring.enabled || def.limit.enabled;
-    const Real angle = needs_angle ? frame.coordinate_a + relative_turn(a, b) : Real{0};
-    if (def.spring.enabled) {
-      solve_angular_spring(a, b, frame, joint.axial_mass, joint.spring_soft,
-                           angle - def.spring.target, joint.spring_impulse);
-    }
-    if (def.motor.enabled) {
-      solve_angular_motor(a, b, frame, joint.axial_mass, def.motor, joint.motor_impulse);
-    }
-    if (def.limit.enabled) {
-      solve_angular_limits(a, b, frame, joint.axial_mass, angle, def.limit, use_bias,
-                           joint.lower_impulse, joint.upper_impulse);
-    }
-  }
-  if (!joint.direct) solve_point(a, b, frame, use_bias, joint.linear_impulse);
 }
 
 }  // namespace
 
-void warm_start(const RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies) {
-  warm_start_rows(joint, frame, bodies);
-}
-
-void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias) {
-  solve_rows(joint, frame, bodies, use_bias);
-}
-
-void fill_row(RevoluteRow& row, const RevoluteJoint& joint, const JointFrame& frame) {
-  static_cast<PointRowFrame&>(row.frame) = point_row_frame(frame);
-  row.frame.h = frame.h;
-  row.frame.inv_h = frame.inv_h;
-  row.frame.coordinate_a = frame.coordinate_a;
-  static_cast<RevoluteRowState&>(row.joint) = joint;
-  row.joint.def.spring = joint.def.spring;
-  row.joint.def.motor = joint.def.motor;
-  row.joint.def.limit = joint.def.limit;
+RevoluteRow revolute_row(const RevoluteJoint& joint, const JointFrame& frame) {
+  const auto f = [](Real x) { return static_cast<SolverReal>(x); };
+  const auto on = [&](bool enabled) {
+    return SolverReal{joint.angle_rows && enabled ? 1.0f : 0.0f};
+  };
+  const RevoluteJointDef& def = joint.def;
+  RevoluteRow row;
+  static_cast<PinRow&>(row) = pin_row(frame, joint.direct ? Vec2(0, 0) : joint.linear_impulse);
+  row.axial_mass = f(joint.axial_mass);
+  row.spring_bias_rate = f(joint.spring_soft.bias_rate);
+  row.spring_mass_scale = f(joint.spring_soft.mass_scale);
+  row.spring_impulse_scale = f(joint.spring_soft.impulse_scale);
+  // The step-start angle counts whole turns and may be large; its differences with the
+  // targets, taken here in double precision, are what the rows need and are small near them.
+  row.spring_offset = f(frame.coordinate_a - def.spring.target);
+  row.motor_speed = f(def.motor.speed);
+  row.motor_max_impulse = f(frame.h * def.motor.max_force);
+  row.lower_offset = f(frame.coordinate_a - def.limit.lower);
+  row.upper_offset = f(def.limit.upper - frame.coordinate_a);
+  row.inv_h = f(frame.inv_h);
+  row.spring_on = on(def.spring.enabled);
+  row.motor_on = on(def.motor.enabled);
+  row.limit_on = on(def.limit.enabled);
+  row.spring_impulse = f(joint.spring_impulse);
+  row.motor_impulse = f(joint.motor_impulse);
+  row.lower_impulse = f(joint.lower_impulse);
+  row.upper_impulse = f(joint.upper_impulse);
+  row.point = !joint.direct;
+  return row;
 }
 
 void store_row(const RevoluteRow& row, RevoluteJoint& joint) {
-  static_cast<RevoluteRowState&>(joint) = row.joint;
+  if (row.point) joint.linear_impulse = Vec2(row.impulse_x, row.impulse_y);
+  joint.spring_impulse = row.spring_impulse;
+  joint.motor_impulse = row.motor_impulse;
+  joint.lower_impulse = row.lower_impulse;
+  joint.upper_impulse = row.upper_impulse;
 }
 
-void warm_start(const RevoluteRow& row, SolverBody* bodies) {
-  warm_start_rows(row.joint, row.frame, bodies);
+// From the record, as from a row (the solver keeps rows for its joints; these are for a joint
+// solved alone).
+void warm_start(const RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies) {
+  warm_start_revolute(bodies, revolute_row(joint, frame));
 }
 
-void solve(RevoluteRow& row, SolverBody* bodies, bool use_bias) {
-  solve_rows(row.joint, row.frame, bodies, use_bias);
+void solve(RevoluteJoint& joint, const JointFrame& frame, SolverBody* bodies, bool use_bias) {
+  RevoluteRow row = revolute_row(joint, frame);
+  solve_revolute(bodies, row, use_bias);
+  store_row(row, joint);
 }
 
 JointReaction reaction(const RevoluteJoint& joint, Real inv_h) {

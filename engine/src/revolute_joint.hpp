@@ -2,6 +2,7 @@
 
 #include "joint_common.hpp"
 #include "joint_rows.hpp"
+#include "revolute_rows.hpp"
 
 namespace mink::detail {
 
@@ -28,24 +29,10 @@ struct RevoluteJoint : RevoluteRowState {
   RevoluteJointDef def;
 };
 
-// A revolute joint as its rows read it every substep, kept in solve order (joint_solver.cpp):
-// its frame's fields and its state, named as a JointFrame's and a RevoluteJoint's, with only
-// the parts of its definition the rows read. A third of the record's size.
-struct RevoluteRow {
-  RevoluteRowFrame frame;
-  struct State : RevoluteRowState {
-    struct {
-      JointSpring spring;
-      JointMotor motor;
-      JointLimit limit;
-    } def;
-  } joint;
-};
-// Copies a prepared joint into its row, and the row's impulses back.
-void fill_row(RevoluteRow& row, const RevoluteJoint& joint, const JointFrame& frame);
+// The joint's rows in the solver's precision (revolute_rows.hpp) from its prepared record and
+// frame: its point row too unless its chain solves that (`direct`). And the rows' impulses back.
+RevoluteRow revolute_row(const RevoluteJoint& joint, const JointFrame& frame);
 void store_row(const RevoluteRow& row, RevoluteJoint& joint);
-void warm_start(const RevoluteRow& row, SolverBody* bodies);
-void solve(RevoluteRow& row, SolverBody* bodies, bool use_bias);
 
 // The functions every joint kind implements (see joint_solver.cpp for when each runs);
 // finish, coordinate and speed only where the kind has something to say (joint.hpp).

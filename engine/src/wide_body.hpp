@@ -2,10 +2,10 @@
 
 // What the wide (SIMD) kernels share: kWideLanes solver bodies gathered into one register per
 // field and scattered back, and the small vector helpers. Included by the wide kernels' files
-// only (contact_kernels_wide.cpp, pin_rows_wide.cpp), each compiled for x86-64-v4, AVX2 and
-// baseline x86-64 and picked at load time; the helpers are always inlined into those clones.
-// The registers stay eight floats wide: what x86-64-v4 (AVX-512) brings is twice the vector
-// registers, so the solve's temporaries stay out of the stack.
+// only (contact_kernels_wide.cpp, pin_rows_wide.cpp, revolute_rows_wide.cpp), each compiled for
+// x86-64-v4, AVX2 and baseline x86-64 and picked at load time; the helpers are always inlined into
+// those clones. The registers stay eight floats wide: what x86-64-v4 (AVX-512) brings is twice the
+// vector registers, so the solve's temporaries stay out of the stack.
 
 #include <cstddef>
 
@@ -181,6 +181,13 @@ MINK_WIDE_INLINE void scatter_where(SolverBody* bodies, const std::int32_t* inde
       b.w = w.w[lane];
     }
   }
+}
+
+// The joints' scatter: every lane in use (a joint has its own copy of a body the solver cannot
+// move, so no two lanes of a colour share one).
+MINK_WIDE_INLINE void scatter_lanes(SolverBody* bodies, const std::int32_t* index,
+                                    const WideBody& w, std::int32_t lanes) {
+  scatter_where(bodies, index, w, [&](int lane) { return lane < lanes; });
 }
 
 // The contacts' scatter: every lane whose body the solver can move.

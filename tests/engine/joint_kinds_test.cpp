@@ -1,5 +1,5 @@
-// Prismatic, wheel, weld and motor joints against closed-form physics: limits holding a load
-// (and the force and torque they report), motor speeds and stalls (a too-weak motor lets its
+// Revolute, prismatic, wheel, weld and motor joints against closed-form physics: limits holding a
+// load (and the force and torque they report), motor speeds and stalls (a too-weak motor lets its
 // load fall at g - F/m), spring periods and sags, a cantilever's sag, a motor joint's drag;
 // and motors switched off, which must stop driving (the revolute's too).
 
@@ -45,6 +45,89 @@ Real measured_period(World& world, const std::function<Real()>& value, Real seco
 void step_for(World& world, Real seconds) {
   const int steps = static_cast<int>(std::round(seconds / world.def().time_step));
   for (int i = 0; i < steps; ++i) world.step();
+}
+
+// A box joined to the ground by the joint `make_def` gives, with a spring of 1.5 Hz towards
+// 0.4 on its coordinate and no gravity: its coordinate swings about the target at that hertz.
+template <typename MakeDef>
+void expect_spring_period(MakeDef make_def) {
+  World world(free_world(false));
+  const BodyId ground = world.create_body({});
+  const BodyId box = test::add_box(world, Vec2(0, 0));
+  const Real hertz = 1.5, target = 0.4;
+  auto def = make_def(world, ground, box);
+  def.spring = {true, hertz, 0, target};
+  const JointId joint = world.create_joint(def);
+  const Real period = measured_period(
+      world, [&] { return world.joint_coordinate(joint) - target; }, 6);
+  EXPECT_NEAR(period, 1 / hertz, 0.03 / hertz);
+  testing::Test::RecordProperty("period", std::to_string(period));
+}
+
+// ---- revolute ---------------------------------------------------------------------------------
+
+// A 1 m arm of mass m pinned at one end, as in the pendulum tests: its centre of mass 0.5 m out
+// along its angle.
+BodyId add_arm(World& world) {
+  BodyDef def;
+  def.type = BodyType::dynamic;
+  def.position = Vec2(0.5, 0);
+  const BodyId arm = world.create_body(def);
+  world.create_shape(arm, ShapeDef::box(0.5, 0.05));
+  return arm;
+}
+
+TEST(Revolute, ASpringTurnsABodyAtItsHertz) {
+  expect_spring_period([](World& world, BodyId ground, BodyId box) {
+    return revolute_joint_at(world, ground, box, Vec2(0, 0));
+  });
+}
+
+// Released level, the arm falls until its lower limit takes it, and rests there: the limit's
+// torque carries the weight's, m g (L / 2) cos(lower). The speculative limit lets it arrive at
+// the bound without passing it.
+TEST(Revolute, ALowerLimitHoldsAFallingArm) {
+  World world(free_world());
+  const BodyId ground = world.create_body({});
+  const BodyId arm = add_arm(world);
+  RevoluteJointDef def = revolute_joint_at(world, ground, arm, Vec2(0, 0));
+  const Real lower = -0.3;
+  def.limit = {true, lower, 0.3};
+  const JointId joint = world.create_joint(def);
+  Real lowest = 0;
+  for (int i = 0; i < 180; ++i) {
+    world.step();
+    lowest = std::min(lowest, world.joint_coordinate(joint));
+  }
+  const Real m = world.mass(arm);
+  EXPECT_NEAR(world.joint_coordinate(joint), lower, 0.005);
+  EXPECT_GT(lowest, lower - 0.01);
+  EXPECT_NEAR(world.joint_speed(joint), 0, 1e-3);
+  const Real weight_torque = m * kGravity * 0.5 * std::cos(lower);
+  EXPECT_NEAR(world.joint_torque(joint), weight_torque, 0.01 * weight_torque);
+  EXPECT_NEAR(world.joint_force(joint).y(), m * kGravity, 0.01 * m * kGravity);
+  RecordProperty("lowest", std::to_string(lowest));
+}
+
+// A motor lifting the arm against its weight stops at the upper limit, which then holds what
+// the motor's torque exceeds the weight's by; a spring at the arm's angle does nothing.
+TEST(Revolute, AMotorDrivesTheArmIntoItsUpperLimit) {
+  World world(free_world());
+  const BodyId ground = world.create_body({});
+  const BodyId arm = add_arm(world);
+  RevoluteJointDef def = revolute_joint_at(world, ground, arm, Vec2(0, 0));
+  const Real upper = 0.6, max_torque = 1;
+  def.limit = {true, -0.5, upper};
+  def.motor = {true, 2, max_torque};
+  const JointId joint = world.create_joint(def);
+  step_for(world, 2);
+  const Real m = world.mass(arm);
+  EXPECT_NEAR(world.joint_coordinate(joint), upper, 0.005);
+  EXPECT_NEAR(world.joint_speed(joint), 0, 1e-3);
+  // Motor and limit together carry the weight's torque, the motor at its bound.
+  const Real weight_torque = m * kGravity * 0.5 * std::cos(upper);
+  EXPECT_NEAR(world.joint_torque(joint), weight_torque, 0.01 * weight_torque);
+  EXPECT_GT(max_torque, weight_torque);
 }
 
 // ---- prismatic --------------------------------------------------------------------------------
@@ -141,17 +224,9 @@ TEST(Prismatic, AMotorBetweenTwoFreeBodiesPushesBothApart) {
 }
 
 TEST(Prismatic, ASpringOscillatesAtItsHertz) {
-  World world(free_world(false));
-  const BodyId ground = world.create_body({});
-  const BodyId box = test::add_box(world, Vec2(0, 0));
-  const Real hertz = 1.5, target = 0.4;
-  PrismaticJointDef def = prismatic_joint_at(world, ground, box, Vec2(0, 0), Vec2(1, 0));
-  def.spring = {true, hertz, 0, target};
-  const JointId joint = world.create_joint(def);
-  const Real period = measured_period(
-      world, [&] { return world.joint_coordinate(joint) - target; }, 6);
-  EXPECT_NEAR(period, 1 / hertz, 0.03 / hertz);
-  RecordProperty("period", std::to_string(period));
+  expect_spring_period([](World& world, BodyId ground, BodyId box) {
+    return prismatic_joint_at(world, ground, box, Vec2(0, 0), Vec2(1, 0));
+  });
 }
 
 // ---- wheel ------------------------------------------------------------------------------------
