@@ -627,22 +627,13 @@ void SweepAndPrune::query(const Aabb& box, std::vector<ProxyId>& out) const {
 
 void SweepAndPrune::query_fixed(const Aabb& box, std::vector<ProxyId>& out) const {
   ProxyStore::check_box(box, "query_fixed");
-  const Entry q = oriented(box);
-  const auto found = [&](const Entry& e) {
+  for_each_fixed(box, [&](ProxyId id, std::uint64_t) { out.push_back(id); });
+}
+
+void SweepAndPrune::sweep_fixed(const Entry& q, std::vector<ProxyId>& out) const {
+  sweep(q, [&](const Entry& e) {
     if (e.is_fixed != 0 && touched_[e.id] == 0) out.push_back(e.id);
-  };
-  if (fixed_stale_) {
-    sweep(q, found);
-  } else {
-    fixed_grid_.query({q.lo0, q.hi0, q.lo1, q.hi1, 0}, [&](ProxyId id) {
-      if (touched_[id] == 0) out.push_back(id);
-    });
-  }
-  for (const ProxyId id : touched_ids_) {
-    if ((touched_[id] & kDestroyed) == 0 && store_.is_fixed(id) && store_.fat(id).overlaps(box)) {
-      out.push_back(id);
-    }
-  }
+  });
 }
 
 void SweepAndPrune::query_point(const Vec2& point, std::vector<ProxyId>& out) const {

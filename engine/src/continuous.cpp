@@ -64,7 +64,7 @@ Sweep WorldState::body_sweep(std::uint32_t body) const {
 namespace {
 
 // Fast bodies' records asked for this many ahead of the one being swept.
-constexpr std::uint32_t kFastBodyAhead = 4;
+constexpr std::uint32_t kFastBodyAhead = 8;
 // A fast body's box this many times wider than the middle one's is scanned apart.
 constexpr Real kWideFactor = 8;
 // No body yet: the sweep loop's first shape finds its body's sweep.
@@ -289,19 +289,16 @@ bool is_still(const Sweep& sweep) {
 // once); the sweep then only keeps the shape's middle from crossing the other shape, which a
 // fast-spinning or corner-sliding body can otherwise do within one step.
 void WorldState::sweep_pair(FastBody& fast, const detail::LocalSweep& local,
-                            std::uint32_t other_shape, const Sweep& other_world_sweep) const {
+                            std::uint32_t other_shape, const detail::FramedSweep& other) const {
   const Shape& o = shapes[other_shape];
   // Both sweeps measured from where the fast body starts, so that where the pair lies does not
   // round what is found (world_grid.hpp).
-  const Vec2 frame_origin = fast.sweep.center0;
   const Sweep& fast_sweep = local.sweep;
-  Sweep other_sweep = other_world_sweep;
-  other_sweep.center0 -= frame_origin;
-  other_sweep.center1 -= frame_origin;
+  const Sweep& other_sweep = other.sweep;
   // Beside a still shape, most sweeps stay outside one of its faces: cheaper to see than any
   // time of impact.
-  const bool still = is_still(other_sweep);
-  const Pose other_start = other_sweep.pose_at(0);
+  const bool still = other.still;
+  const Pose& other_start = other.start;
   for (const std::uint32_t s : bodies[fast.body].shapes) {
     const Shape& f = shapes[s];
     if (!should_make_contact(s, other_shape)) continue;
@@ -450,16 +447,21 @@ void WorldState::solve_continuous() {
     std::vector<ProxyId> proxies;
     detail::LocalSweep local;
     for (std::uint32_t i = begin; i < end; ++i) {
-      if (i + kFastBodyAhead < end) {
-        detail::prefetch_bytes(&continuous.fast_body(i + kFastBodyAhead), sizeof(FastBody));
-      }
+      // Its first line only: the rest is read for the few with something in the way.
+      if (i + kFastBodyAhead < end)
+        detail::prefetch_line(&continuous.fast_body(i + kFastBodyAhead));
       FastBody& fast = continuous.fast_body(i);
-      // The sweep from the body's start, found for its first pair swept.
+      // The sweep from the body's start, found for its first pair swept; the other body's in
+      // its frame, for the first of that body's shapes.
       bool has_local = false;
+      detail::FramedSweep framed;
+      bool has_framed = false;
       const auto sweep_with = [&](std::uint32_t shape, const Sweep& other_sweep) {
         if (!has_local) local = detail::LocalSweep(fast.sweep);
         has_local = true;
-        sweep_pair(fast, local, shape, other_sweep);
+        if (!has_framed) framed = detail::FramedSweep(other_sweep, fast.sweep.center0);
+        has_framed = true;
+        sweep_pair(fast, local, shape, framed);
       };
       // Static and kinematic shapes (everything, for a bullet) whose broadphase boxes meet the
       // body's box over the step: from its contacts when its shapes stayed within their
@@ -484,18 +486,20 @@ void WorldState::solve_continuous() {
       } else {
         // A body that left its broadphase boxes (a fast body mostly has: they are fattened by
         // a few centimetres only), or a bullet, which meets dynamic shapes too.
-        proxies.clear();
-        if (fast.bullet) {
-          broadphase.query(fast.box, proxies);
-        } else {
-          broadphase.query_fixed(fast.box, proxies);
-        }
-        for (const ProxyId proxy : proxies) {
-          const auto index = static_cast<std::uint32_t>(broadphase.user_data(proxy));
-          if (index >= shapes.size()) continue;
+        const auto add_shape = [&](ProxyId proxy, std::uint64_t user_data) {
+          const auto index = static_cast<std::uint32_t>(user_data);
+          if (index >= shapes.size()) return;
           const Shape& o = shapes[index];
-          if (!o.alive || o.proxy != proxy || o.body == fast.body) continue;
+          if (!o.alive || o.proxy != proxy || o.body == fast.body) return;
           if (fast.bullet || bodies[o.body].type != BodyType::dynamic) found.push_back(index);
+        };
+        if (fast.bullet) {
+          proxies.clear();
+          broadphase.query(fast.box, proxies);
+          for (const ProxyId proxy : proxies) add_shape(proxy, broadphase.user_data(proxy));
+        } else {
+          // The box is the body's own swept box, well formed.
+          broadphase.for_each_fixed(fast.box, add_shape);
         }
       }
       if (!fast.has_sweep && !found.empty()) {
@@ -516,6 +520,7 @@ void WorldState::solve_continuous() {
         if (shapes[index].body != other_body) {
           other_body = shapes[index].body;
           other = body_sweep(other_body);
+          has_framed = false;
         }
         if (!fast.bullet && !is_still(other) &&
             travel_relative_to(fast.sweep, fast.extent, other) <= slow) {
@@ -535,6 +540,7 @@ void WorldState::solve_continuous() {
                                fast.rotation1) <= limit) {
           return;
         }
+        has_framed = false;
         for (const std::uint32_t s : bodies[other.body].shapes) sweep_with(s, other.sweep);
       };
       const auto first = std::lower_bound(continuous.fast_reach_x.begin(),

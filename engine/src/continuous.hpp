@@ -35,22 +35,40 @@ struct SweepEnds {
 // fraction of the step it may keep. finish_body writes it whole while the body's record is at
 // hand: three cache lines.
 struct alignas(64) FastBody {
+  // The first line holds what every fast body's search reads (most find nothing in their way).
   std::uint32_t body = 0;
   std::uint32_t solver_index = 0;
-  Real fraction = 1;  // 1 when nothing was in the way
-  Real slow = 0;      // continuous_threshold * min_extent: what it may travel past others unswept
-  Real extent = 0;    // its body's
-  Aabb box;
-  Sweep sweep;  // valid once has_sweep: found only for a body with something to meet
-  // The sweep's start and end rotations, for fast bodies meeting each other (set with it then).
-  Rotation rotation0{}, rotation1{};
   bool bullet = false;
   // Each shape's box over the step lies in its broadphase box: the body's contacts then hold
   // every static and kinematic shape the sweep can meet, and no query is needed.
   bool covered = false;
   bool has_sweep = false;
+  Aabb box;
+  Real fraction = 1;  // 1 when nothing was in the way
+  Real slow = 0;      // continuous_threshold * min_extent: what it may travel past others unswept
+  Real extent = 0;    // its body's
+  Sweep sweep;        // valid once has_sweep: found only for a body with something to meet
+  // The sweep's start and end rotations, for fast bodies meeting each other (set with it then).
+  Rotation rotation0{}, rotation1{};
 };
+static_assert(offsetof(FastBody, slow) + sizeof(Real) <= 64);
 static_assert(sizeof(FastBody) == 192, "finish_body writes three lines of a FastBody");
+
+// Another body's sweep in a fast body's frame (measured from where the fast body starts), its
+// pose there when the step began, and whether it stood still: found once for all the pairs of
+// the two bodies' shapes.
+struct FramedSweep {
+  Sweep sweep;
+  Pose start;
+  bool still = false;
+  FramedSweep() = default;
+  FramedSweep(const Sweep& world_sweep, const Vec2& frame_origin) : sweep(world_sweep) {
+    sweep.center0 -= frame_origin;
+    sweep.center1 -= frame_origin;
+    start = sweep.pose_at(0);
+    still = sweep.center0 == sweep.center1 && sweep.angle0 == sweep.angle1;
+  }
+};
 
 // A fast body's sweep measured from its start (the frame each of its pairs is swept in) and
 // its ends: found only for a body with a pair to sweep.

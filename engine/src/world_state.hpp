@@ -272,7 +272,7 @@ struct WorldState {
   Sweep solver_sweep(std::uint32_t solver_index) const;
   Sweep body_sweep(std::uint32_t body) const;
   void sweep_pair(detail::FastBody& fast, const detail::LocalSweep& local,
-                  std::uint32_t other_shape, const Sweep& other_sweep) const;
+                  std::uint32_t other_shape, const detail::FramedSweep& other) const;
 };
 
 }  // namespace mink
