@@ -24,14 +24,14 @@ MINK_WIDE_KERNEL void solve_revolutes_wide(SolverBody* bodies, WideRevoluteRows&
 }
 
 // The angle rows' fields, and those of them the solve accumulates.
+// clang-format off
 #define MINK_REVOLUTE_IMPULSES(X) \
   X(spring_impulse) X(motor_impulse) X(lower_impulse) X(upper_impulse)
-#define MINK_REVOLUTE_SETTINGS(X)                                                              \
-  X(axial_mass)                                                                                \
-  X(spring_bias_rate)                                                                          \
-  X(spring_mass_scale)                                                                         \
-  X(spring_impulse_scale) X(spring_offset) X(motor_speed) X(motor_max_impulse) X(lower_offset) \
-      X(upper_offset) X(inv_h) X(spring_on) X(motor_on) X(limit_on)
+#define MINK_REVOLUTE_SETTINGS(X)                                                      \
+  X(axial_mass) X(spring_bias_rate) X(spring_mass_scale) X(spring_impulse_scale)       \
+  X(spring_offset) X(motor_speed) X(motor_max_impulse) X(lower_offset) X(upper_offset) \
+  X(inv_h) X(spring_on) X(motor_on) X(limit_on)
+// clang-format on
 
 void pack_revolute(WideRevoluteRows& w, int lane, const RevoluteRow& row) {
   pack_pin(w, lane, row);
