@@ -24,6 +24,9 @@ class ConstraintGraph {
               bool b_fixed);
   // Per colour, one bit per body: for snapshots.
   std::array<std::vector<std::uint64_t>, kGraphColors>& bits() noexcept { return bits_; }
+  const std::array<std::vector<std::uint64_t>, kGraphColors>& bits() const noexcept {
+    return bits_;
+  }
 
  private:
   std::array<std::vector<std::uint64_t>, kGraphColors> bits_;
