@@ -20,13 +20,17 @@ inline constexpr std::uint8_t kNoColor = 255;
 class ConstraintGraph {
  public:
   std::uint8_t add(std::uint32_t body_a, bool a_fixed, std::uint32_t body_b, bool b_fixed);
+  // Puts a constraint in `color` (one below kGraphColors) if neither of its moving bodies is
+  // there yet: what add() tries colour by colour, and what a snapshot's check rebuilds its
+  // colours with.
+  bool place(std::uint8_t color, std::uint32_t body_a, bool a_fixed, std::uint32_t body_b,
+             bool b_fixed);
   void remove(std::uint8_t color, std::uint32_t body_a, bool a_fixed, std::uint32_t body_b,
               bool b_fixed);
   // Per colour, one bit per body: for snapshots.
   std::array<std::vector<std::uint64_t>, kGraphColors>& bits() noexcept { return bits_; }
-  const std::array<std::vector<std::uint64_t>, kGraphColors>& bits() const noexcept {
-    return bits_;
-  }
+  // Whether both hold the same bodies in every colour (however long their bit lists).
+  bool same_colours(const ConstraintGraph& other) const;
 
  private:
   std::array<std::vector<std::uint64_t>, kGraphColors> bits_;

@@ -277,10 +277,6 @@ Real travel_relative_to(const Sweep& moving, Real extent, const Sweep& frame) {
                             Rotation::from_angle(frame.angle1));
 }
 
-bool is_still(const Sweep& sweep) {
-  return sweep.center0 == sweep.center1 && sweep.angle0 == sweep.angle1;
-}
-
 }  // namespace
 
 // The first touch of `fast`'s shapes with `other_shape` moving by `other_world_sweep`, if it
@@ -522,7 +518,7 @@ void WorldState::solve_continuous() {
           other = body_sweep(other_body);
           has_framed = false;
         }
-        if (!fast.bullet && !is_still(other) &&
+        if (!fast.bullet && !detail::is_still(other) &&
             travel_relative_to(fast.sweep, fast.extent, other) <= slow) {
           continue;
         }

@@ -54,6 +54,10 @@ struct alignas(64) FastBody {
 static_assert(offsetof(FastBody, slow) + sizeof(Real) <= 64);
 static_assert(sizeof(FastBody) == 192, "finish_body writes three lines of a FastBody");
 
+inline bool is_still(const Sweep& sweep) {
+  return sweep.center0 == sweep.center1 && sweep.angle0 == sweep.angle1;
+}
+
 // Another body's sweep in a fast body's frame (measured from where the fast body starts), its
 // pose there when the step began, and whether it stood still: found once for all the pairs of
 // the two bodies' shapes.
@@ -66,7 +70,7 @@ struct FramedSweep {
     sweep.center0 -= frame_origin;
     sweep.center1 -= frame_origin;
     start = sweep.pose_at(0);
-    still = sweep.center0 == sweep.center1 && sweep.angle0 == sweep.angle1;
+    still = is_still(sweep);
   }
 };
 

@@ -2,7 +2,6 @@
 
 #include "snapshot_checks.hpp"
 
-#include <array>
 #include <cmath>
 #include <iterator>
 #include <string>
@@ -124,51 +123,35 @@ void check_indices(const WorldState& w, ByteReader& in) {
 // workers), and the graph's bits are exactly those bodies (new constraints take their colour
 // from them). A restored world keeps its colours, which fix the order of the solve.
 void check_colours(const WorldState& w, ByteReader& in) {
-  std::array<std::vector<std::uint64_t>, kGraphColors> expected;
-  const auto take = [&](std::uint8_t color, std::uint32_t body, bool fixed,
-                        const std::string& what) {
-    if (color >= kGraphColors || fixed) return;
-    std::vector<std::uint64_t>& bits = expected[color];
-    const std::size_t word = body >> 6;
-    if (word >= bits.size()) bits.resize(word + 1, 0);
-    const std::uint64_t bit = std::uint64_t{1} << (body & 63);
-    if ((bits[word] & bit) != 0) {
-      in.fail(what + " shares colour " + std::to_string(color) +
-              " with another constraint on body " + std::to_string(body));
-    }
-    bits[word] |= bit;
+  ConstraintGraph rebuilt;
+  const auto place = [&](std::uint8_t color, std::uint32_t body_a, bool a_fixed,
+                         std::uint32_t body_b, bool b_fixed, const char* kind, std::size_t index) {
+    if (color >= kGraphColors || rebuilt.place(color, body_a, a_fixed, body_b, b_fixed)) return;
+    in.fail(std::string(kind) + " " + std::to_string(index) + " shares colour " +
+            std::to_string(color) + " with another constraint on one of its bodies");
   };
   for (std::size_t c = 0; c < w.contacts.size(); ++c) {
     const Contact& contact = w.contacts[c];
-    const std::string what = "contact " + std::to_string(c);
-    take(contact.color, contact.body_a, contact.a_fixed, what);
-    take(contact.color, contact.body_b, contact.b_fixed, what);
+    place(contact.color, contact.body_a, contact.a_fixed, contact.body_b, contact.b_fixed,
+          "contact", c);
   }
   for (std::size_t i = 0; i < w.joints.size(); ++i) {
     const Joint& j = w.joints.slots()[i];
     if (!j.alive || j.color == kNoColor) continue;
-    const std::string what = "joint " + std::to_string(i);
     if (j.body_count == 4) {
       // A gear's four bodies do not fit the graph's pairs: it is solved one at a time.
-      if (j.color != kOverflowColor) in.fail(what + ", a gear, is not in the overflow");
+      if (j.color != kOverflowColor)
+        in.fail("joint " + std::to_string(i) + ", a gear, is not in the overflow");
       continue;
     }
     if (j.a_fixed != (w.bodies[j.body[0]].type != BodyType::dynamic) ||
         j.b_fixed != (w.bodies[j.body[1]].type != BodyType::dynamic)) {
-      in.fail(what + " flags its bodies' types wrongly");
+      in.fail("joint " + std::to_string(i) + " flags its bodies' types wrongly");
     }
-    take(j.color, j.body[0], j.a_fixed, what);
-    take(j.color, j.body[1], j.b_fixed, what);
+    place(j.color, j.body[0], j.a_fixed, j.body[1], j.b_fixed, "joint", i);
   }
-  const auto trimmed = [](std::vector<std::uint64_t> bits) {
-    while (!bits.empty() && bits.back() == 0) bits.pop_back();
-    return bits;
-  };
-  for (std::uint8_t color = 0; color < kGraphColors; ++color) {
-    if (trimmed(w.graph.bits()[color]) != trimmed(expected[color])) {
-      in.fail("the constraint graph's colour " + std::to_string(color) +
-              " is not its constraints' bodies");
-    }
+  if (!w.graph.same_colours(rebuilt)) {
+    in.fail("the constraint graph's colours are not its constraints' bodies");
   }
 }
 
