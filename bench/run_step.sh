@@ -17,7 +17,8 @@
 #    Every run is a process of its own (bench/engine/step_race.hpp). The runs of a scene
 #    and worker count are interleaved: they take turns of 200 ms, one running while the others
 #    are stopped (bench/engine/take_turns.cpp), so a busy moment of a shared machine falls on
-#    all alike; rounds repeat the whole suite. Step times are wall times, as in
+#    all alike; at one worker they all run on the same CPU, so a slow core does too; rounds
+#    repeat the whole suite. Step times are wall times, as in
 #    Box2D v3's app; the first step of a run is not timed, as there, nor the first of each turn.
 #    It writes
 #      step_v3.csv          case,size,implementation,median_ns: the median wall time of a step
@@ -100,6 +101,8 @@ if [ ! -x "$v3_runner" ]; then
 fi
 
 turns_binary=$build_dir/bin/mink_bench_take_turns
+# The CPU the one-worker races run on: the last this script may use (taskset lists them).
+race_cpu=$(taskset -cp $$ 2>/dev/null | sed -n 's/.*: //p' | tr ',' '\n' | tail -n 1 | sed 's/.*-//')
 rounds=${MINK_BENCH_STEP_V3_ROUNDS:-1}
 turn_ms=${MINK_BENCH_STEP_V3_TURN_MS:-200}
 workers_list=${MINK_BENCH_STEP_V3_WORKERS:-1 2}
@@ -174,8 +177,13 @@ for round in $(seq "$rounds"); do
           --sleep="$sleep_mode" --turn-ms="$turn_ms" --samples="$work/$scene.$workers.$implementation"
           --profile ${steps:+"--steps=$steps"})
       done
+      # At one worker every run of the race is kept on the same CPU: a core of a shared machine
+      # can be slower than the other for minutes, and a run stopped and continued stays where
+      # it ran, so unpinned runs could spend the whole race on different cores.
+      pin=()
+      if [ "$workers" = 1 ] && [ -n "$race_cpu" ]; then pin=(--cpu="$race_cpu"); fi
       status=0
-      "$turns_binary" "${commands[@]}" >"$work/output" || status=$?
+      "$turns_binary" "${pin[@]}" "${commands[@]}" >"$work/output" || status=$?
       while IFS= read -r line; do
         case $line in
           race\ *)

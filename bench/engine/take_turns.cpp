@@ -8,11 +8,17 @@
 // other load, a process that runs a smaller share of the time, which would be the faster
 // engine's if turns were so many steps each.
 //
-// Usage: mink_bench_take_turns CMD [ARGS...] [--and CMD [ARGS...]]...
+// With --cpu=N first, every command runs on CPU N alone (its affinity set before it starts). On
+// a shared machine one core can be slower than another for minutes at a time (its host is busy
+// elsewhere); a single-threaded command stopped and continued stays on the core it ran on, so
+// without this two commands can spend a whole race on different cores, one slow and one not.
+//
+// Usage: mink_bench_take_turns [--cpu=N] CMD [ARGS...] [--and CMD [ARGS...]]...
 // Output and errors are the commands' own. The exit status is the highest of the commands'
 // (a command killed by a signal counts as 128 + the signal), and each non-zero one is named on
 // stderr.
 
+#include <sched.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -22,6 +28,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -62,11 +69,41 @@ bool wait_for_stop(Command& command) {
   return false;
 }
 
+// The N of --cpu=N, when it names a CPU this process may run on.
+std::optional<int> parse_cpu(std::string_view text) {
+  const std::string_view prefix = "--cpu=";
+  if (text.substr(0, prefix.size()) != prefix) return std::nullopt;
+  const std::string digits(text.substr(prefix.size()));
+  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos ||
+      digits.size() > 4) {
+    return std::nullopt;
+  }
+  const int cpu = std::stoi(digits);
+  cpu_set_t allowed;
+  CPU_ZERO(&allowed);
+  if (sched_getaffinity(0, sizeof allowed, &allowed) != 0 || cpu >= CPU_SETSIZE ||
+      !CPU_ISSET(cpu, &allowed)) {
+    return std::nullopt;
+  }
+  return cpu;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<Command> commands(1);
-  for (int i = 1; i < argc; ++i) {
+  std::optional<int> cpu;
+  int first = 1;
+  if (argc > 1 && std::string_view(argv[1]).substr(0, 6) == "--cpu=") {
+    cpu = parse_cpu(argv[1]);
+    if (!cpu) {
+      std::fprintf(stderr, "mink_bench_take_turns: %s: not a CPU this process may run on\n",
+                   argv[1]);
+      return 2;
+    }
+    first = 2;
+  }
+  for (int i = first; i < argc; ++i) {
     if (std::string_view(argv[i]) == "--and") {
       commands.emplace_back();
     } else {
@@ -75,7 +112,7 @@ int main(int argc, char** argv) {
   }
   for (Command& command : commands) {
     if (command.argv.empty()) {
-      std::fprintf(stderr, "usage: %s CMD [ARGS...] [--and CMD [ARGS...]]...\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--cpu=N] CMD [ARGS...] [--and CMD [ARGS...]]...\n", argv[0]);
       return 2;
     }
     command.argv.push_back(nullptr);
@@ -89,6 +126,15 @@ int main(int argc, char** argv) {
       return 1;
     }
     if (command.pid == 0) {
+      if (cpu) {
+        cpu_set_t only;
+        CPU_ZERO(&only);
+        CPU_SET(*cpu, &only);
+        if (sched_setaffinity(0, sizeof only, &only) != 0) {
+          std::perror("mink_bench_take_turns: sched_setaffinity");
+          _exit(127);
+        }
+      }
       execvp(command.argv[0], command.argv.data());
       std::fprintf(stderr, "mink_bench_take_turns: %s: %s\n", command.argv[0],
                    std::strerror(errno));
