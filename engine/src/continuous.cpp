@@ -439,7 +439,10 @@ void WorldState::solve_continuous() {
     }
   }
 
+  continuous.stopped.resize(tasks.workers());
+  for (std::vector<std::uint32_t>& list : continuous.stopped) list.clear();
   tasks.parallel_for(count, 4, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
+    std::vector<std::uint32_t>& stopped = continuous.stopped[worker];
     std::vector<ProxyId> proxies;
     detail::LocalSweep local;
     for (std::uint32_t i = begin; i < end; ++i) {
@@ -525,31 +528,33 @@ void WorldState::solve_continuous() {
         sweep_with(index, other);
       }
       // Other fast bodies (a bullet has met every dynamic shape already).
-      if (fast.bullet || !def.continuous_fast_pairs) continue;
-      const auto meet = [&](std::uint32_t j) {
-        const FastBody& other = continuous.fast_body(j);
-        if (j == i || other.bullet) return;
-        const Real limit = std::min(slow, other.slow);
-        if (travel_relative_to(fast.sweep, fast.extent, other.sweep, other.rotation0,
-                               other.rotation1) <= limit &&
-            travel_relative_to(other.sweep, other.extent, fast.sweep, fast.rotation0,
-                               fast.rotation1) <= limit) {
-          return;
+      if (!fast.bullet && def.continuous_fast_pairs) {
+        const auto meet = [&](std::uint32_t j) {
+          const FastBody& other = continuous.fast_body(j);
+          if (j == i || other.bullet) return;
+          const Real limit = std::min(slow, other.slow);
+          if (travel_relative_to(fast.sweep, fast.extent, other.sweep, other.rotation0,
+                                 other.rotation1) <= limit &&
+              travel_relative_to(other.sweep, other.extent, fast.sweep, fast.rotation0,
+                                 fast.rotation1) <= limit) {
+            return;
+          }
+          has_framed = false;
+          for (const std::uint32_t s : bodies[other.body].shapes) sweep_with(s, other.sweep);
+        };
+        const auto first = std::lower_bound(continuous.fast_reach_x.begin(),
+                                            continuous.fast_reach_x.end(), fast.box.lower.x());
+        for (auto k = static_cast<std::size_t>(first - continuous.fast_reach_x.begin());
+             k < continuous.fast_by_x.size(); ++k) {
+          const Aabb& box = continuous.fast_boxes_by_x[k];
+          if (box.lower.x() > fast.box.upper.x()) break;
+          if (box.overlaps(fast.box)) meet(continuous.fast_by_x[k]);
         }
-        has_framed = false;
-        for (const std::uint32_t s : bodies[other.body].shapes) sweep_with(s, other.sweep);
-      };
-      const auto first = std::lower_bound(continuous.fast_reach_x.begin(),
-                                          continuous.fast_reach_x.end(), fast.box.lower.x());
-      for (auto k = static_cast<std::size_t>(first - continuous.fast_reach_x.begin());
-           k < continuous.fast_by_x.size(); ++k) {
-        const Aabb& box = continuous.fast_boxes_by_x[k];
-        if (box.lower.x() > fast.box.upper.x()) break;
-        if (box.overlaps(fast.box)) meet(continuous.fast_by_x[k]);
+        for (const std::uint32_t j : continuous.fast_wide) {
+          if (continuous.fast_body(j).box.overlaps(fast.box)) meet(j);
+        }
       }
-      for (const std::uint32_t j : continuous.fast_wide) {
-        if (continuous.fast_body(j).box.overlaps(fast.box)) meet(j);
-      }
+      if (fast.fraction < 1) stopped.push_back(fast_list[i]);
     }
   });
 
@@ -564,10 +569,15 @@ void WorldState::solve_continuous() {
     }
   }
   // Stopped bodies go back to where they first touched, keeping their velocity, and their
-  // shapes' boxes with them.
-  for (const std::uint32_t si : fast_list) {
+  // shapes' boxes with them: the few the workers listed, in body order (solver order is).
+  std::vector<std::uint32_t>& hit_list = continuous.hit_list;
+  hit_list.clear();
+  for (const std::vector<std::uint32_t>& list : continuous.stopped) {
+    hit_list.insert(hit_list.end(), list.begin(), list.end());
+  }
+  std::sort(hit_list.begin(), hit_list.end());
+  for (const std::uint32_t si : hit_list) {
     const FastBody& fast = continuous.fast[si];
-    if (fast.fraction >= 1) continue;
     ++continuous.hits;
     Body& b = bodies[fast.body];
     // As Sweep::pose_at, with the way to the touch on the grid (world_grid.hpp).

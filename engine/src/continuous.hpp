@@ -112,6 +112,9 @@ struct ContinuousState {
   std::vector<Real> widths;   // scratch
   std::vector<Real> lower_x;  // the fast bodies' boxes' lower x, side by side for the sort
   std::vector<std::vector<std::uint32_t>> candidates;
+  // Per worker, the fast bodies (solver indices) it stopped short; then all of them, in order.
+  std::vector<std::vector<std::uint32_t>> stopped;
+  std::vector<std::uint32_t> hit_list;
   std::size_t hits = 0;  // fast bodies stopped short this step
 };
 
