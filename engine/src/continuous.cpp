@@ -297,7 +297,6 @@ void WorldState::sweep_pair(FastBody& fast, const detail::LocalSweep& local,
   const Pose& other_start = other.start;
   for (const std::uint32_t s : bodies[fast.body].shapes) {
     const Shape& f = shapes[s];
-    if (!should_make_contact(s, other_shape)) continue;
     const Real tolerance = 0.25 * def.linear_slop;
     const Real target = slop_target(f.geometry, o.geometry, def.linear_slop);
     const auto* chain = std::get_if<ChainSegment>(&o.geometry);
@@ -310,6 +309,9 @@ void WorldState::sweep_pair(FastBody& fast, const detail::LocalSweep& local,
                                  target + tolerance)) {
       continue;
     }
+    // After the cheap tests above, which settle most pairs: this one reads the bodies' records
+    // and joint lists.
+    if (!should_make_contact(s, other_shape)) continue;
     const ShapeDistance start =
         shape_distance(f.geometry, local.ends.start, o.geometry, other_start);
     const bool near = start.overlap || start.distance < 4 * def.linear_slop;
