@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -69,19 +70,14 @@ bool wait_for_stop(Command& command) {
   return false;
 }
 
-// The N of --cpu=N, when it names a CPU this process may run on.
-std::optional<int> parse_cpu(std::string_view text) {
-  const std::string_view prefix = "--cpu=";
-  if (text.substr(0, prefix.size()) != prefix) return std::nullopt;
-  const std::string digits(text.substr(prefix.size()));
-  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos ||
-      digits.size() > 4) {
-    return std::nullopt;
-  }
-  const int cpu = std::stoi(digits);
+// The CPU `digits` names (the N of --cpu=N), when this process may run on it.
+std::optional<int> parse_cpu(std::string_view digits) {
+  int cpu = -1;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), cpu);
   cpu_set_t allowed;
   CPU_ZERO(&allowed);
-  if (sched_getaffinity(0, sizeof allowed, &allowed) != 0 || cpu >= CPU_SETSIZE ||
+  if (error != std::errc() || end != digits.data() + digits.size() || cpu < 0 ||
+      cpu >= CPU_SETSIZE || sched_getaffinity(0, sizeof allowed, &allowed) != 0 ||
       !CPU_ISSET(cpu, &allowed)) {
     return std::nullopt;
   }
@@ -94,8 +90,9 @@ int main(int argc, char** argv) {
   std::vector<Command> commands(1);
   std::optional<int> cpu;
   int first = 1;
-  if (argc > 1 && std::string_view(argv[1]).substr(0, 6) == "--cpu=") {
-    cpu = parse_cpu(argv[1]);
+  constexpr std::string_view kCpu = "--cpu=";
+  if (argc > 1 && std::string_view(argv[1]).starts_with(kCpu)) {
+    cpu = parse_cpu(std::string_view(argv[1]).substr(kCpu.size()));
     if (!cpu) {
       std::fprintf(stderr, "mink_bench_take_turns: %s: not a CPU this process may run on\n",
                    argv[1]);

@@ -15,6 +15,7 @@
 #include "continuous.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -441,10 +442,8 @@ void WorldState::solve_continuous() {
     }
   }
 
-  continuous.stopped.resize(tasks.workers());
-  for (std::vector<std::uint32_t>& list : continuous.stopped) list.clear();
+  continuous.stopped.reset(continuous.is_fast.size(), tasks.workers());
   tasks.parallel_for(count, 4, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
-    std::vector<std::uint32_t>& stopped = continuous.stopped[worker];
     std::vector<ProxyId> proxies;
     detail::LocalSweep local;
     for (std::uint32_t i = begin; i < end; ++i) {
@@ -530,20 +529,20 @@ void WorldState::solve_continuous() {
         sweep_with(index, other);
       }
       // Other fast bodies (a bullet has met every dynamic shape already).
+      const auto meet = [&](std::uint32_t j) {
+        const FastBody& other = continuous.fast_body(j);
+        if (j == i || other.bullet) return;
+        const Real limit = std::min(slow, other.slow);
+        if (travel_relative_to(fast.sweep, fast.extent, other.sweep, other.rotation0,
+                               other.rotation1) <= limit &&
+            travel_relative_to(other.sweep, other.extent, fast.sweep, fast.rotation0,
+                               fast.rotation1) <= limit) {
+          return;
+        }
+        has_framed = false;
+        for (const std::uint32_t s : bodies[other.body].shapes) sweep_with(s, other.sweep);
+      };
       if (!fast.bullet && def.continuous_fast_pairs) {
-        const auto meet = [&](std::uint32_t j) {
-          const FastBody& other = continuous.fast_body(j);
-          if (j == i || other.bullet) return;
-          const Real limit = std::min(slow, other.slow);
-          if (travel_relative_to(fast.sweep, fast.extent, other.sweep, other.rotation0,
-                                 other.rotation1) <= limit &&
-              travel_relative_to(other.sweep, other.extent, fast.sweep, fast.rotation0,
-                                 fast.rotation1) <= limit) {
-            return;
-          }
-          has_framed = false;
-          for (const std::uint32_t s : bodies[other.body].shapes) sweep_with(s, other.sweep);
-        };
         const auto first = std::lower_bound(continuous.fast_reach_x.begin(),
                                             continuous.fast_reach_x.end(), fast.box.lower.x());
         for (auto k = static_cast<std::size_t>(first - continuous.fast_reach_x.begin());
@@ -556,7 +555,7 @@ void WorldState::solve_continuous() {
           if (continuous.fast_body(j).box.overlaps(fast.box)) meet(j);
         }
       }
-      if (fast.fraction < 1) stopped.push_back(fast_list[i]);
+      if (fast.fraction < 1) continuous.stopped.mark(fast_list[i], worker);
     }
   });
 
@@ -571,24 +570,20 @@ void WorldState::solve_continuous() {
     }
   }
   // Stopped bodies go back to where they first touched, keeping their velocity, and their
-  // shapes' boxes with them: the few the workers listed, in body order (solver order is).
-  std::vector<std::uint32_t>& hit_list = continuous.hit_list;
-  hit_list.clear();
-  for (const std::vector<std::uint32_t>& list : continuous.stopped) {
-    hit_list.insert(hit_list.end(), list.begin(), list.end());
-  }
-  std::sort(hit_list.begin(), hit_list.end());
-  for (const std::uint32_t si : hit_list) {
-    const FastBody& fast = continuous.fast[si];
-    ++continuous.hits;
-    Body& b = bodies[fast.body];
-    // As Sweep::pose_at, with the way to the touch on the grid (world_grid.hpp).
-    const Sweep& sweep = fast.sweep;
-    b.rotation = sweep.pose_at(fast.fraction).rotation;
-    b.center = sweep.center0 + detail::on_grid(fast.fraction * (sweep.center1 - sweep.center0));
-    detail::place_origin(b);
-    for (const std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b);
-    boxes_left[fast.solver_index] = 1;
+  // shapes' boxes with them: the few the workers marked, in body order (solver order is).
+  for (std::size_t word = 0; word < continuous.stopped.words(); ++word) {
+    for (std::uint64_t bits = continuous.stopped.word(word); bits != 0; bits &= bits - 1) {
+      const FastBody& fast = continuous.fast[word * 64 + std::countr_zero(bits)];
+      ++continuous.hits;
+      Body& b = bodies[fast.body];
+      // As Sweep::pose_at, with the way to the touch on the grid (world_grid.hpp).
+      const Sweep& sweep = fast.sweep;
+      b.rotation = sweep.pose_at(fast.fraction).rotation;
+      b.center = sweep.center0 + detail::on_grid(fast.fraction * (sweep.center1 - sweep.center0));
+      detail::place_origin(b);
+      for (const std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b);
+      boxes_left[fast.solver_index] = 1;
+    }
   }
   counters.continuous_hits = continuous.hits;
 }

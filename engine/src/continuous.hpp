@@ -10,6 +10,7 @@
 #include "mink/broadphase/broadphase.hpp"
 #include "mink/geometry/aabb.hpp"
 #include "mink/narrowphase/time_of_impact.hpp"
+#include "worker_marks.hpp"
 
 namespace mink::detail {
 
@@ -112,9 +113,8 @@ struct ContinuousState {
   std::vector<Real> widths;   // scratch
   std::vector<Real> lower_x;  // the fast bodies' boxes' lower x, side by side for the sort
   std::vector<std::vector<std::uint32_t>> candidates;
-  // Per worker, the fast bodies (solver indices) it stopped short; then all of them, in order.
-  std::vector<std::vector<std::uint32_t>> stopped;
-  std::vector<std::uint32_t> hit_list;
+  // The fast bodies (by solver index) stopped short this step, marked by the workers.
+  WorkerMarks stopped;
   std::size_t hits = 0;  // fast bodies stopped short this step
 };
 
