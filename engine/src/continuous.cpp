@@ -112,19 +112,40 @@ struct SegmentLine {
   Real along(const Vec2& point) const { return (point - a).dot(e); }
 };
 
-// Whether a shape whose middle is `middle` (in the moving body's frame), carried from
-// `ends.start` to `ends.end`, only grazes the still chain segment `chain`: its middle starts
-// behind the segment (one-sided, it passes), or closes on the segment's line by less than
-// `core` and ends farther than `core` in front of it, however it turns on the way. The
-// speculative contact then holds it, and no time of impact is needed: a body sliding fast
-// along a chain costs none (Box2D v3's early out, with the turn's dip counted).
-bool grazes_chain(const Vec2& middle, const Sweep& sweep, const SweepEnds& ends,
-                  const ChainSegment& chain, const Pose& chain_pose, Real core) {
+// A moving body's shape carried from `ends.start` to `ends.end` (`local_center`: the body's
+// centre of mass in its frame), as the tests below read it; its core only if it has few points.
+detail::QuickShape quick_shape(const ShapeGeometry& geometry, const SweepEnds& ends,
+                               const Vec2& local_center) {
+  detail::QuickShape q;
+  q.radius = detail::shape_radius(geometry);
+  const Vec2 middle = shape_middle(geometry);
+  q.middle_start = ends.start.apply(middle);
+  q.middle_end = ends.end.apply(middle);
+  q.middle_stray = ends.stray(middle, local_center);
+  const auto* polygon = std::get_if<RoundedPolygon>(&geometry);
+  if (polygon != nullptr && polygon->hull.vertices().size() > detail::kQuickPoints) return q;
+  detail::for_each_core_point(geometry, [&](const Vec2& p) {
+    q.start[q.count] = ends.start.apply(p);
+    q.end[q.count] = ends.end.apply(p);
+    q.stray[q.count] = ends.stray(p, local_center);
+    ++q.count;
+  });
+  q.has_core = true;
+  return q;
+}
+
+// Whether a moving shape only grazes the still chain segment `chain`: its middle starts behind
+// the segment (one-sided, it passes), or closes on the segment's line by less than `core` and
+// ends farther than `core` in front of it, however it turns on the way. The speculative
+// contact then holds it, and no time of impact is needed: a body sliding fast along a chain
+// costs none (Box2D v3's early out, with the turn's dip counted).
+bool grazes_chain(const detail::QuickShape& moving, const ChainSegment& chain,
+                  const Pose& chain_pose, Real core) {
   const SegmentLine line(chain, chain_pose);
   if (!(line.length > 0)) return false;
-  const Real start = line.in_front(ends.start.apply(middle));
-  const Real end = line.in_front(ends.end.apply(middle));
-  return start < 0 || (start - end < core && end - ends.stray(middle, sweep.local_center) > core);
+  const Real start = line.in_front(moving.middle_start);
+  const Real end = line.in_front(moving.middle_end);
+  return start < 0 || (start - end < core && end - moving.middle_stray > core);
 }
 
 // The fraction of the step at which `middle` (a point in the moving body's frame), starting in
@@ -236,29 +257,41 @@ void for_each_face(const ShapeGeometry& geometry, const Pose& pose, Face&& face)
   }
 }
 
-// Whether `moving` (its core points and radius), carried by `sweep`, stays farther than
-// `clearance` outside one face of the still shape `still` over the whole step: then they
-// cannot touch, and no time of impact is needed. A sweep moves the centre of mass along a
-// line and turns the body evenly, so along a normal a point at distance r from the centre
-// of mass dips below the straight line between its ends by at most r (1 - cos(turn / 2)) (a
-// turn within half a revolution; 2 r beyond).
-bool clear_of_a_face(const ShapeGeometry& moving, const Sweep& sweep, const SweepEnds& ends,
-                     const ShapeGeometry& still, const Pose& still_pose, Real clearance) {
-  const Pose& start = ends.start;
-  const Pose& end = ends.end;
-  const Real radius = detail::shape_radius(moving);
+// Whether a moving shape stays farther than `clearance` outside one face of the still shape
+// `still` over the whole step: then they cannot touch, and no time of impact is needed. A
+// sweep moves the centre of mass along a line and turns the body evenly, so along a normal a
+// point at distance r from the centre of mass dips below the straight line between its ends by
+// at most r (1 - cos(turn / 2)) (a turn within half a revolution; 2 r beyond).
+bool clear_of_a_face(const detail::QuickShape& moving, const ShapeGeometry& still,
+                     const Pose& still_pose, Real clearance) {
+  if (!moving.has_core) return false;
   bool clear = false;
   for_each_face(still, still_pose, [&](const Vec2& normal, Real offset) {
     if (clear) return;
     Real nearest = std::numeric_limits<Real>::infinity();
-    detail::for_each_core_point(moving, [&](const Vec2& p) {
-      const Real stray = ends.stray(p, sweep.local_center);
-      nearest =
-          std::min(nearest, std::min(normal.dot(start.apply(p)), normal.dot(end.apply(p))) - stray);
-    });
-    clear = nearest - radius > offset + clearance;
+    for (std::size_t i = 0; i < moving.count; ++i) {
+      nearest = std::min(nearest, std::min(normal.dot(moving.start[i]), normal.dot(moving.end[i])) -
+                                      moving.stray[i]);
+    }
+    clear = nearest - moving.radius > offset + clearance;
   });
   return clear;
+}
+
+// A fast body's ends from its records, without the angles its sweep needs, in the frame its
+// pairs are swept in (measured from where its centre of mass starts, `frame_origin`): its
+// rotation before and after the step, and its turn's dip from the solver's rotation over the
+// step (taken as 2 for a turn near half a revolution or beyond, as it may be).
+SweepEnds quick_ends(const Body& b, const detail::SolverBody& sb, const Vec2& frame_origin) {
+  const Pose start{-b.previous_rotation.apply(b.local_center), b.previous_rotation};
+  const Pose end{(b.center - frame_origin) - b.rotation.apply(b.local_center), b.rotation};
+  constexpr Real kSureTurn = 3;  // below pi by more than the summed angle can be off
+  Real dip = 2;
+  if (std::abs(sb.turn) < kSureTurn) {
+    const Real cos_turn = sb.qc / std::sqrt(sb.qc * sb.qc + sb.qs * sb.qs);
+    dip = 1 - std::sqrt(std::max(Real{0}, 0.5 * (1 + cos_turn)));
+  }
+  return {start, end, dip};
 }
 
 // How far a point of `moving` can travel in `frame`'s body frame over the step: its centre's
@@ -281,37 +314,32 @@ Real travel_relative_to(const Sweep& moving, Real extent, const Sweep& frame) {
 }  // namespace
 
 // The first touch of `fast`'s shapes with `other_shape` moving by `other_world_sweep`, if it
-// comes before `fast.fraction`. A pair already within contact range when the step began is the
-// contact's to keep apart (sweeping the surfaces would stop a body sliding along a floor at
-// once); the sweep then only keeps the shape's middle from crossing the other shape, which a
-// fast-spinning or corner-sliding body can otherwise do within one step.
+// comes before `fast.fraction`; the shapes marked in `settled` (by their place among the
+// body's) were seen to pass it by already (clear_of_a_face, grazes_chain). A pair already
+// within contact range when the step began is the contact's to keep apart (sweeping the
+// surfaces would stop a body sliding along a floor at once); the sweep then only keeps the
+// shape's middle from crossing the other shape, which a fast-spinning or corner-sliding body
+// can otherwise do within one step.
 void WorldState::sweep_pair(FastBody& fast, const detail::LocalSweep& local,
-                            std::uint32_t other_shape, const detail::FramedSweep& other) const {
+                            std::uint32_t other_shape, const detail::FramedSweep& other,
+                            std::uint64_t settled) const {
   const Shape& o = shapes[other_shape];
   // Both sweeps measured from where the fast body starts, so that where the pair lies does not
   // round what is found (world_grid.hpp).
   const Sweep& fast_sweep = local.sweep;
   const Sweep& other_sweep = other.sweep;
-  // Beside a still shape, most sweeps stay outside one of its faces: cheaper to see than any
-  // time of impact.
   const bool still = other.still;
   const Pose& other_start = other.start;
-  for (const std::uint32_t s : bodies[fast.body].shapes) {
+  const std::vector<std::uint32_t>& fast_shapes = bodies[fast.body].shapes;
+  for (std::size_t k = 0; k < fast_shapes.size(); ++k) {
+    if (k < 64 && (settled >> k & 1) != 0) continue;
+    const std::uint32_t s = fast_shapes[k];
     const Shape& f = shapes[s];
     const Real tolerance = 0.25 * def.linear_slop;
     const Real target = slop_target(f.geometry, o.geometry, def.linear_slop);
     const auto* chain = std::get_if<ChainSegment>(&o.geometry);
-    if (still && chain != nullptr &&
-        grazes_chain(shape_middle(f.geometry), fast_sweep, local.ends, *chain, other_start,
-                     kCoreFraction * bodies[fast.body].min_extent)) {
-      continue;
-    }
-    if (still && clear_of_a_face(f.geometry, fast_sweep, local.ends, o.geometry, other_start,
-                                 target + tolerance)) {
-      continue;
-    }
-    // After the cheap tests above, which settle most pairs: this one reads the bodies' records
-    // and joint lists.
+    // After the cheap tests, which settle most pairs: this one reads the bodies' records and
+    // joint lists.
     if (!should_make_contact(s, other_shape)) continue;
     const ShapeDistance start =
         shape_distance(f.geometry, local.ends.start, o.geometry, other_start);
@@ -326,8 +354,8 @@ void WorldState::sweep_pair(FastBody& fast, const detail::LocalSweep& local,
       const std::optional<Circle> circle = middle_circle(f.geometry);
       if (!circle) continue;
       middle = *circle;
-      if (still &&
-          clear_of_a_face(middle, fast_sweep, local.ends, o.geometry, other_start, 3 * tolerance)) {
+      if (still && clear_of_a_face(quick_shape(middle, local.ends, fast_sweep.local_center),
+                                   o.geometry, other_start, 3 * tolerance)) {
         continue;
       }
     }
@@ -403,6 +431,7 @@ void WorldState::solve_continuous() {
 
   const auto count = static_cast<std::uint32_t>(fast_list.size());
   continuous.candidates.resize(tasks.workers());
+  continuous.quick.resize(tasks.workers());
   // Fast bodies against each other: their boxes by lower x, so each finds its neighbours by a
   // short scan, those many times wider than the middle one apart.
   continuous.fast_by_x.clear();
@@ -456,12 +485,19 @@ void WorldState::solve_continuous() {
       bool has_local = false;
       detail::FramedSweep framed;
       bool has_framed = false;
-      const auto sweep_with = [&](std::uint32_t shape, const Sweep& other_sweep) {
+      const auto ensure_sweep = [&] {
+        if (fast.has_sweep) return;
+        fast.sweep = solver_sweep(fast.solver_index);
+        fast.has_sweep = true;
+      };
+      const auto sweep_with = [&](std::uint32_t shape, const Sweep& other_sweep,
+                                  std::uint64_t settled) {
+        ensure_sweep();
         if (!has_local) local = detail::LocalSweep(fast.sweep);
         has_local = true;
         if (!has_framed) framed = detail::FramedSweep(other_sweep, fast.sweep.center0);
         has_framed = true;
-        sweep_pair(fast, local, shape, framed);
+        sweep_pair(fast, local, shape, framed, settled);
       };
       // Static and kinematic shapes (everything, for a bullet) whose broadphase boxes meet the
       // body's box over the step: from its contacts when its shapes stayed within their
@@ -502,31 +538,81 @@ void WorldState::solve_continuous() {
           broadphase.for_each_fixed(fast.box, add_shape);
         }
       }
-      if (!fast.has_sweep && !found.empty()) {
-        fast.sweep = solver_sweep(fast.solver_index);
-        fast.has_sweep = true;
-      }
       // The same shape in any order of the broadphase gives the same first touch, but the
       // order is fixed anyway so the work done is too (and a shape met by several of the
       // body's shapes is swept once).
       std::sort(found.begin(), found.end());
       found.erase(std::unique(found.begin(), found.end()), found.end());
       const Real slow = fast.slow;
+      const Body& fast_record = bodies[fast.body];
+      const std::vector<std::uint32_t>& fast_shapes = fast_record.shapes;
+      // Beside a still shape most pairs are settled by cheap tests (clear_of_a_face,
+      // grazes_chain) on the body's shapes at the ends of its step, found from its records for
+      // the first such pair; its sweep, with the arc tangents of its angles, waits for a pair
+      // they leave.
+      std::vector<detail::QuickShape>& quick = continuous.quick[worker];
+      bool has_quick = false;
+      Vec2 frame_origin{0, 0};
+      const Real tolerance = 0.25 * def.linear_slop;
       // A body's shapes lie side by side in `found` (shape indices of one body mostly are):
-      // its sweep, with its arc tangents, is found once for them.
+      // what is found of the body is found once for them. A static body stands still, and its
+      // sweep is needed only for a pair the cheap tests leave.
       std::uint32_t other_body = kNoBody;
       Sweep other;
+      bool has_other = false, other_still = false;
+      Pose other_start;  // a still body's pose in the frame
       for (const std::uint32_t index : found) {
-        if (shapes[index].body != other_body) {
-          other_body = shapes[index].body;
-          other = body_sweep(other_body);
+        const std::uint32_t body = shapes[index].body;
+        if (body != other_body) {
+          other_body = body;
           has_framed = false;
+          has_other = bodies[body].type != BodyType::static_body;
+          if (has_other) other = body_sweep(body);
+          other_still = !has_other || detail::is_still(other);
+          if (other_still && !has_quick) {
+            const detail::SolverBody& sb = solver_bodies[fast.solver_index];
+            frame_origin = fast_record.center - detail::on_grid(Vec2(sb.dpx, sb.dpy));
+            const SweepEnds ends = quick_ends(fast_record, sb, frame_origin);
+            quick.resize(fast_shapes.size());
+            for (std::size_t k = 0; k < fast_shapes.size(); ++k) {
+              quick[k] =
+                  quick_shape(shapes[fast_shapes[k]].geometry, ends, fast_record.local_center);
+            }
+            has_quick = true;
+          }
+          if (other_still) {
+            const Body& o = bodies[body];
+            other_start = {(o.center - frame_origin) - o.rotation.apply(o.local_center),
+                           o.rotation};
+          }
         }
-        if (!fast.bullet && !detail::is_still(other) &&
-            travel_relative_to(fast.sweep, fast.extent, other) <= slow) {
+        if (!other_still) {
+          ensure_sweep();
+          if (!fast.bullet && travel_relative_to(fast.sweep, fast.extent, other) <= slow) continue;
+          sweep_with(index, other, 0);
           continue;
         }
-        sweep_with(index, other);
+        const ShapeGeometry& still = shapes[index].geometry;
+        const auto* chain = std::get_if<ChainSegment>(&still);
+        std::uint64_t settled = 0;
+        for (std::size_t k = 0; k < fast_shapes.size() && k < 64; ++k) {
+          const bool passes =
+              (chain != nullptr && grazes_chain(quick[k], *chain, other_start,
+                                                kCoreFraction * fast_record.min_extent)) ||
+              clear_of_a_face(
+                  quick[k], still, other_start,
+                  slop_target(shapes[fast_shapes[k]].geometry, still, def.linear_slop) + tolerance);
+          settled |= std::uint64_t{passes} << k;
+        }
+        if (fast_shapes.size() <= 64 &&
+            settled == (~std::uint64_t{0} >> (64 - fast_shapes.size()))) {
+          continue;
+        }
+        if (!has_other) {
+          other = body_sweep(body);
+          has_other = true;
+        }
+        sweep_with(index, other, settled);
       }
       // Other fast bodies (a bullet has met every dynamic shape already).
       const auto meet = [&](std::uint32_t j) {
@@ -540,7 +626,7 @@ void WorldState::solve_continuous() {
           return;
         }
         has_framed = false;
-        for (const std::uint32_t s : bodies[other.body].shapes) sweep_with(s, other.sweep);
+        for (const std::uint32_t s : bodies[other.body].shapes) sweep_with(s, other.sweep, 0);
       };
       if (!fast.bullet && def.continuous_fast_pairs) {
         const auto first = std::lower_bound(continuous.fast_reach_x.begin(),

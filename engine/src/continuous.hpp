@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -21,6 +22,8 @@ struct SweepEnds {
   Pose start, end;
   Real dip = 0;
   SweepEnds() = default;
+  SweepEnds(const Pose& start_pose, const Pose& end_pose, Real turn_dip)
+      : start(start_pose), end(end_pose), dip(turn_dip) {}
   explicit SweepEnds(const Sweep& sweep) : start(sweep.pose_at(0)), end(sweep.pose_at(1)) {
     const Real turn = std::abs(sweep.angle1 - sweep.angle0);
     dip = turn <= std::numbers::pi ? 1 - std::cos(0.5 * turn) : 2;
@@ -30,6 +33,22 @@ struct SweepEnds {
   Real stray(const Vec2& point, const Vec2& local_center) const {
     return dip * (point - local_center).norm();
   }
+};
+
+// A fast body's shape at both ends of its step, for the tests that settle most of its pairs
+// with still shapes without a time of impact: its core points where the step starts and ends
+// (in the frame its pairs are swept in), each with how far its path strays from the line
+// between them (SweepEnds::stray), and the same for its middle. The core only up to
+// kQuickPoints points (has_core false beyond: its pairs are swept).
+inline constexpr std::size_t kQuickPoints = 16;
+struct QuickShape {
+  std::array<Vec2, kQuickPoints> start, end;
+  std::array<Real, kQuickPoints> stray;
+  std::size_t count = 0;
+  Real radius = 0;
+  Vec2 middle_start{0, 0}, middle_end{0, 0};
+  Real middle_stray = 0;
+  bool has_core = false;
 };
 
 // A body that moved fast this step: its sweep over the step, the box around it, and the
@@ -113,6 +132,7 @@ struct ContinuousState {
   std::vector<Real> widths;   // scratch
   std::vector<Real> lower_x;  // the fast bodies' boxes' lower x, side by side for the sort
   std::vector<std::vector<std::uint32_t>> candidates;
+  std::vector<std::vector<QuickShape>> quick;  // per worker: its fast body's shapes
   // The fast bodies (by solver index) stopped short this step, marked by the workers.
   WorkerMarks stopped;
   std::size_t hits = 0;  // fast bodies stopped short this step

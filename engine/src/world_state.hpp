@@ -272,7 +272,8 @@ struct WorldState {
   Sweep solver_sweep(std::uint32_t solver_index) const;
   Sweep body_sweep(std::uint32_t body) const;
   void sweep_pair(detail::FastBody& fast, const detail::LocalSweep& local,
-                  std::uint32_t other_shape, const detail::FramedSweep& other) const;
+                  std::uint32_t other_shape, const detail::FramedSweep& other,
+                  std::uint64_t settled) const;
 };
 
 }  // namespace mink
