@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <bit>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -384,11 +383,7 @@ const LargeVector<WorldState::StepContactKey>& WorldState::current_step_contact_
 void WorldState::collect_step_contacts() {
   step_contacts.clear();
   step_contact_keys_valid = false;
-  for (std::size_t word = 0; word < step_contact_marks.words(); ++word) {
-    for (std::uint64_t bits = step_contact_marks.word(word); bits != 0; bits &= bits - 1) {
-      step_contacts.push_back(static_cast<std::uint32_t>(word * 64 + std::countr_zero(bits)));
-    }
-  }
+  step_contact_marks.for_each_marked([&](std::uint32_t c) { step_contacts.push_back(c); });
 }
 
 // What a manifold's update reads of its pair's bodies (pose, velocity, extent) and shapes

@@ -15,7 +15,6 @@
 #include "continuous.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -33,6 +32,13 @@ using detail::FastBody;
 using detail::Shape;
 using detail::SweepEnds;
 
+// Where the centre of mass of a body the solver moved this step was when the step began (as
+// write_back moved it).
+Vec2 WorldState::start_center(std::uint32_t solver_index) const {
+  const detail::SolverBody& sb = solver_bodies[solver_index];
+  return bodies[solver_to_body[solver_index]].center - detail::on_grid(Vec2(sb.dpx, sb.dpy));
+}
+
 // The sweep of a body the solver moved this step, from the solver's record of it.
 Sweep WorldState::solver_sweep(std::uint32_t solver_index) const {
   const Body& b = bodies[solver_to_body[solver_index]];
@@ -40,7 +46,7 @@ Sweep WorldState::solver_sweep(std::uint32_t solver_index) const {
   Sweep sweep;
   sweep.local_center = b.local_center;
   sweep.center1 = b.center;
-  sweep.center0 = b.center - detail::on_grid(Vec2(sb.dpx, sb.dpy));  // as write_back moved it
+  sweep.center0 = start_center(solver_index);
   // (qc, qs) is the step's rotation exactly, up to whole turns; the summed angle tells how
   // many (it differs from the exact turn by far less than half a turn).
   const Real exact = std::atan2(sb.qs, sb.qc);
@@ -278,13 +284,20 @@ bool clear_of_a_face(const detail::QuickShape& moving, const ShapeGeometry& stil
   return clear;
 }
 
+// Body `b`'s pose with its centre of mass at `center` and turned by `rotation`, measured from
+// `frame_origin`.
+Pose pose_in_frame(const Vec2& center, const Rotation& rotation, const Body& b,
+                   const Vec2& frame_origin) {
+  return {(center - frame_origin) - rotation.apply(b.local_center), rotation};
+}
+
 // A fast body's ends from its records, without the angles its sweep needs, in the frame its
 // pairs are swept in (measured from where its centre of mass starts, `frame_origin`): its
 // rotation before and after the step, and its turn's dip from the solver's rotation over the
 // step (taken as 2 for a turn near half a revolution or beyond, as it may be).
 SweepEnds quick_ends(const Body& b, const detail::SolverBody& sb, const Vec2& frame_origin) {
-  const Pose start{-b.previous_rotation.apply(b.local_center), b.previous_rotation};
-  const Pose end{(b.center - frame_origin) - b.rotation.apply(b.local_center), b.rotation};
+  const Pose start = pose_in_frame(frame_origin, b.previous_rotation, b, frame_origin);
+  const Pose end = pose_in_frame(b.center, b.rotation, b, frame_origin);
   constexpr Real kSureTurn = 3;  // below pi by more than the summed angle can be off
   Real dip = 2;
   if (std::abs(sb.turn) < kSureTurn) {
@@ -553,6 +566,17 @@ void WorldState::solve_continuous() {
       std::vector<detail::QuickShape>& quick = continuous.quick[worker];
       bool has_quick = false;
       Vec2 frame_origin{0, 0};
+      const auto ensure_quick = [&] {
+        if (has_quick) return;
+        has_quick = true;
+        frame_origin = start_center(fast.solver_index);
+        const SweepEnds ends =
+            quick_ends(fast_record, solver_bodies[fast.solver_index], frame_origin);
+        quick.resize(fast_shapes.size());
+        for (std::size_t k = 0; k < fast_shapes.size(); ++k) {
+          quick[k] = quick_shape(shapes[fast_shapes[k]].geometry, ends, fast_record.local_center);
+        }
+      };
       const Real tolerance = 0.25 * def.linear_slop;
       // A body's shapes lie side by side in `found` (shape indices of one body mostly are):
       // what is found of the body is found once for them. A static body stands still, and its
@@ -569,21 +593,10 @@ void WorldState::solve_continuous() {
           has_other = bodies[body].type != BodyType::static_body;
           if (has_other) other = body_sweep(body);
           other_still = !has_other || detail::is_still(other);
-          if (other_still && !has_quick) {
-            const detail::SolverBody& sb = solver_bodies[fast.solver_index];
-            frame_origin = fast_record.center - detail::on_grid(Vec2(sb.dpx, sb.dpy));
-            const SweepEnds ends = quick_ends(fast_record, sb, frame_origin);
-            quick.resize(fast_shapes.size());
-            for (std::size_t k = 0; k < fast_shapes.size(); ++k) {
-              quick[k] =
-                  quick_shape(shapes[fast_shapes[k]].geometry, ends, fast_record.local_center);
-            }
-            has_quick = true;
-          }
           if (other_still) {
+            ensure_quick();
             const Body& o = bodies[body];
-            other_start = {(o.center - frame_origin) - o.rotation.apply(o.local_center),
-                           o.rotation};
+            other_start = pose_in_frame(o.center, o.rotation, o, frame_origin);
           }
         }
         if (!other_still) {
@@ -657,20 +670,18 @@ void WorldState::solve_continuous() {
   }
   // Stopped bodies go back to where they first touched, keeping their velocity, and their
   // shapes' boxes with them: the few the workers marked, in body order (solver order is).
-  for (std::size_t word = 0; word < continuous.stopped.words(); ++word) {
-    for (std::uint64_t bits = continuous.stopped.word(word); bits != 0; bits &= bits - 1) {
-      const FastBody& fast = continuous.fast[word * 64 + std::countr_zero(bits)];
-      ++continuous.hits;
-      Body& b = bodies[fast.body];
-      // As Sweep::pose_at, with the way to the touch on the grid (world_grid.hpp).
-      const Sweep& sweep = fast.sweep;
-      b.rotation = sweep.pose_at(fast.fraction).rotation;
-      b.center = sweep.center0 + detail::on_grid(fast.fraction * (sweep.center1 - sweep.center0));
-      detail::place_origin(b);
-      for (const std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b);
-      boxes_left[fast.solver_index] = 1;
-    }
-  }
+  continuous.stopped.for_each_marked([&](std::uint32_t si) {
+    const FastBody& fast = continuous.fast[si];
+    ++continuous.hits;
+    Body& b = bodies[fast.body];
+    // As Sweep::pose_at, with the way to the touch on the grid (world_grid.hpp).
+    const Sweep& sweep = fast.sweep;
+    b.rotation = sweep.pose_at(fast.fraction).rotation;
+    b.center = sweep.center0 + detail::on_grid(fast.fraction * (sweep.center1 - sweep.center0));
+    detail::place_origin(b);
+    for (const std::uint32_t s : b.shapes) update_shape_aabb(shapes[s], b);
+    boxes_left[fast.solver_index] = 1;
+  });
   counters.continuous_hits = continuous.hits;
 }
 

@@ -276,13 +276,10 @@ void WorldState::prepare_joints() {
       });
   joint_color_begin.assign(kColors + 1, 0);
   step_joints.clear();
-  for (std::size_t word = 0; word < joint_marks.words(); ++word) {
-    for (std::uint64_t bits = joint_marks.word(word); bits != 0; bits &= bits - 1) {
-      const auto j = static_cast<std::uint32_t>(word * 64 + std::countr_zero(bits));
-      step_joints.push_back(j);
-      ++joint_color_begin[joint_slot_color[j] + 1];
-    }
-  }
+  joint_marks.for_each_marked([&](std::uint32_t j) {
+    step_joints.push_back(j);
+    ++joint_color_begin[joint_slot_color[j] + 1];
+  });
   for (std::size_t c = 1; c <= kColors; ++c) joint_color_begin[c] += joint_color_begin[c - 1];
   // step_joints in colour order; joint_order keeps them in slot order, the order of their
   // records in memory, which the passes over every joint's record follow.

@@ -5,6 +5,7 @@
 // of words with atomic ORs made its cache lines go back and forth between them (neighbouring
 // bodies share contacts and joints), so the marking took as long on two workers as on one.
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -30,6 +31,16 @@ class WorkerMarks {
       marked |= bits_[worker * words_ + word];
     }
     return marked;
+  }
+  // visit(index) for each item any worker marked, in index order.
+  template <typename Visit>
+  void for_each_marked(Visit&& visit) const {
+    for (std::size_t w = 0; w < words_; ++w) {
+      for (std::uint64_t bits = word(w); bits != 0; bits &= bits - 1) {
+        visit(
+            static_cast<std::uint32_t>(w * 64 + static_cast<std::size_t>(std::countr_zero(bits))));
+      }
+    }
   }
   // Replaces those items' marks by `marked` (a pass that drops some of them, word by word).
   void set_word(std::size_t word, std::uint64_t marked) {

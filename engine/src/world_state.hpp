@@ -269,6 +269,7 @@ struct WorldState {
   void record_fast_body(std::uint32_t solver_index, const Aabb& swept, bool covered);
   void prefetch_pair(const detail::Contact& c) const;
   void prefetch_hulls(const detail::Contact& c) const;
+  Vec2 start_center(std::uint32_t solver_index) const;
   Sweep solver_sweep(std::uint32_t solver_index) const;
   Sweep body_sweep(std::uint32_t body) const;
   void sweep_pair(detail::FastBody& fast, const detail::LocalSweep& local,
