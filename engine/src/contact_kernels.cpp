@@ -106,66 +106,88 @@ void warm_start_one(SolverBody* bodies, ContactConstraint& c) {
   store_velocity(b, c.inv_mass_b, c.inv_inertia_b, vbx, vby, wb);
 }
 
+void PairVelocity::apply(const ContactConstraint& c, const ContactConstraintPoint& p, SolverReal px,
+                         SolverReal py) {
+  vax -= c.inv_mass_a * px;
+  vay -= c.inv_mass_a * py;
+  wa -= c.inv_inertia_a * (p.ax * py - p.ay * px);
+  vbx += c.inv_mass_b * px;
+  vby += c.inv_mass_b * py;
+  wb += c.inv_inertia_b * (p.bx * py - p.by * px);
+}
+
+SolverReal PairVelocity::normal_speed(const ContactConstraint& c,
+                                      const ContactConstraintPoint& p) const {
+  const SolverReal dvx = (vbx - wb * p.by) - (vax - wa * p.ay);
+  const SolverReal dvy = (vby + wb * p.bx) - (vay + wa * p.ax);
+  return dvx * c.nx + dvy * c.ny;
+}
+
+PairVelocity load_pair(const SolverBody* bodies, const ContactConstraint& c) {
+  const SolverBody& a = bodies[c.body_a];
+  const SolverBody& b = bodies[c.body_b];
+  return {a.vx, a.vy, a.w, b.vx, b.vy, b.w};
+}
+
+void store_pair(SolverBody* bodies, const ContactConstraint& c, const PairVelocity& v) {
+  store_velocity(bodies[c.body_a], c.inv_mass_a, c.inv_inertia_a, v.vax, v.vay, v.wa);
+  store_velocity(bodies[c.body_b], c.inv_mass_b, c.inv_inertia_b, v.vbx, v.vby, v.wb);
+}
+
+SolverReal separation_now(const SolverBody& a, const SolverBody& b, const ContactConstraint& c,
+                          const ContactConstraintPoint& p) {
+  // The anchors moved with their bodies since the step began.
+  const SolverReal dpx = b.dpx - a.dpx, dpy = b.dpy - a.dpy;
+  const SolverReal prax = a.qc * p.ax - a.qs * p.ay, pray = a.qs * p.ax + a.qc * p.ay;
+  const SolverReal prbx = b.qc * p.bx - b.qs * p.by, prby = b.qs * p.bx + b.qc * p.by;
+  return (dpx + prbx - prax) * c.nx + (dpy + prby - pray) * c.ny + p.base_separation;
+}
+
+PointBias point_bias(const ContactConstraint& c, SolverReal separation, SolverReal inv_h,
+                     SolverReal max_push, bool use_bias) {
+  if (separation > 0) return {separation * inv_h, 1, 0};  // speculative: close the gap, no more
+  if (!use_bias) return {0, 1, 0};
+  return {smax(c.bias_rate * separation, -max_push), c.mass_scale, c.impulse_scale};
+}
+
 void solve_one(SolverBody* bodies, ContactConstraint& c, SolverReal inv_h, SolverReal max_push,
                bool use_bias) {
-  SolverBody& a = bodies[c.body_a];
-  SolverBody& b = bodies[c.body_b];
-  const SolverReal ma = c.inv_mass_a, ia = c.inv_inertia_a, mb = c.inv_mass_b, ib = c.inv_inertia_b;
-  SolverReal vax = a.vx, vay = a.vy, wa = a.w, vbx = b.vx, vby = b.vy, wb = b.w;
-  const SolverReal dpx = b.dpx - a.dpx, dpy = b.dpy - a.dpy;
-  const SolverReal nx = c.nx, ny = c.ny;
-  const auto apply = [&](const ContactConstraintPoint& p, SolverReal px, SolverReal py) {
-    vax -= ma * px;
-    vay -= ma * py;
-    wa -= ia * (p.ax * py - p.ay * px);
-    vbx += mb * px;
-    vby += mb * py;
-    wb += ib * (p.bx * py - p.by * px);
-  };
+  const SolverBody& a = bodies[c.body_a];
+  const SolverBody& b = bodies[c.body_b];
+  PairVelocity v = load_pair(bodies, c);
   for (int j = 0; j < 2; ++j) {
     ContactConstraintPoint& p = c.points[j];
-    // Separation now: anchors moved with their bodies since the step began.
-    const SolverReal prax = a.qc * p.ax - a.qs * p.ay, pray = a.qs * p.ax + a.qc * p.ay;
-    const SolverReal prbx = b.qc * p.bx - b.qs * p.by, prby = b.qs * p.bx + b.qc * p.by;
-    const SolverReal s = (dpx + prbx - prax) * nx + (dpy + prby - pray) * ny + p.base_separation;
-    SolverReal bias = 0, mass_scale = 1, impulse_scale = 0;
-    if (s > 0) {
-      bias = s * inv_h;  // speculative: close the gap in this substep, no more
-    } else if (use_bias) {
-      bias = smax(c.bias_rate * s, -max_push);
-      mass_scale = c.mass_scale;
-      impulse_scale = c.impulse_scale;
-    }
-    const SolverReal dvx = (vbx - wb * p.by) - (vax - wa * p.ay);
-    const SolverReal dvy = (vby + wb * p.bx) - (vay + wa * p.ax);
-    const SolverReal vn = dvx * nx + dvy * ny;
-    SolverReal impulse =
-        -p.normal_mass * mass_scale * (vn + bias) - impulse_scale * p.normal_impulse;
+    const PointBias pb = point_bias(c, separation_now(a, b, c, p), inv_h, max_push, use_bias);
+    SolverReal impulse = -p.normal_mass * pb.mass_scale * (v.normal_speed(c, p) + pb.bias) -
+                         pb.impulse_scale * p.normal_impulse;
     const SolverReal accumulated = smax(p.normal_impulse + impulse, SolverReal{0});
     impulse = accumulated - p.normal_impulse;
     p.normal_impulse = accumulated;
     p.max_normal_impulse = smax(p.max_normal_impulse, impulse);
-    apply(p, impulse * nx, impulse * ny);
+    v.apply(c, p, impulse * c.nx, impulse * c.ny);
   }
-  // Friction in the relax pass only. Solved in the biased pass as well, it also answered the
-  // push-out's sideways share and fought each substep's normal correction, and the light boxes
-  // near a stiff stack's top walked: a 40-row pyramid's top box crept 0.6 m sideways in 500
-  // steps at 60 Hz contacts. Against velocities rid of the bias it holds them (2 cm).
-  const SolverReal tx = ny, ty = -nx;
-  for (int j = 0; j < 2 && !use_bias; ++j) {
+  if (!use_bias) solve_friction(c, v);
+  store_pair(bodies, c, v);
+}
+
+// Friction in the relax pass only. Solved in the biased pass as well, it also answered the
+// push-out's sideways share and fought each substep's normal correction, and the light boxes
+// near a stiff stack's top walked: a 40-row pyramid's top box crept 0.6 m sideways in 500
+// steps at 60 Hz contacts. Against velocities rid of the bias it holds them (2 cm).
+void solve_friction(ContactConstraint& c, PairVelocity& v) {
+  const SolverReal tx = c.ny, ty = -c.nx;
+  for (int j = 0; j < 2; ++j) {
     ContactConstraintPoint& p = c.points[j];
-    const SolverReal dvx = (vbx - wb * p.by) - (vax - wa * p.ay);
-    const SolverReal dvy = (vby + wb * p.bx) - (vay + wa * p.ax);
+    const SolverReal dvx = (v.vbx - v.wb * p.by) - (v.vax - v.wa * p.ay);
+    const SolverReal dvy = (v.vby + v.wb * p.bx) - (v.vay + v.wa * p.ax);
     const SolverReal vt = dvx * tx + dvy * ty;
     const SolverReal limit = c.friction * p.normal_impulse;
     const SolverReal accumulated =
         smin(smax(p.tangent_impulse - p.tangent_mass * vt, -limit), limit);
     const SolverReal impulse = accumulated - p.tangent_impulse;
     p.tangent_impulse = accumulated;
-    apply(p, impulse * tx, impulse * ty);
+    v.apply(c, p, impulse * tx, impulse * ty);
   }
-  store_velocity(a, c.inv_mass_a, c.inv_inertia_a, vax, vay, wa);
-  store_velocity(b, c.inv_mass_b, c.inv_inertia_b, vbx, vby, wb);
 }
 
 void finish_points(ContactConstraint& c) {

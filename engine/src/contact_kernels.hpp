@@ -43,6 +43,33 @@ void warm_start_one(SolverBody* bodies, ContactConstraint& c);
 // impulses, so it changes nothing, and the lanes of the wide path stay uniform.
 void solve_one(SolverBody* bodies, ContactConstraint& c, SolverReal inv_h, SolverReal max_push,
                bool use_bias);
+
+// The parts of solve_one, for a solver that takes a constraint's normal rows elsewhere (the
+// direct solve of contact stacks) and its friction as solve_one does.
+// The velocities of a constraint's two bodies while it is solved.
+struct PairVelocity {
+  SolverReal vax, vay, wa, vbx, vby, wb;
+  // An impulse (px, py) at point p, on B and against A.
+  void apply(const ContactConstraint& c, const ContactConstraintPoint& p, SolverReal px,
+             SolverReal py);
+  // Point p's speed along the normal, B relative to A.
+  SolverReal normal_speed(const ContactConstraint& c, const ContactConstraintPoint& p) const;
+};
+PairVelocity load_pair(const SolverBody* bodies, const ContactConstraint& c);
+// Leaves a body the solver cannot move as it is.
+void store_pair(SolverBody* bodies, const ContactConstraint& c, const PairVelocity& v);
+// Point p's separation now, its anchors moved with their bodies since the step began.
+SolverReal separation_now(const SolverBody& a, const SolverBody& b, const ContactConstraint& c,
+                          const ContactConstraintPoint& p);
+// What a normal row aims for at a separation: the bias speed, and the softness's share of the
+// row's mass and of its accumulated impulse that it applies.
+struct PointBias {
+  SolverReal bias, mass_scale, impulse_scale;
+};
+PointBias point_bias(const ContactConstraint& c, SolverReal separation, SolverReal inv_h,
+                     SolverReal max_push, bool use_bias);
+// Both points' friction against the velocities `v`, which it updates.
+void solve_friction(ContactConstraint& c, PairVelocity& v);
 void restitution_one(SolverBody* bodies, ContactConstraint& c, SolverReal threshold);
 
 // kWideLanes at a time, over a colour's wide constraints [begin, end).

@@ -14,7 +14,10 @@
 // position change without recomputing manifolds. Contacts with a body that does not move get
 // twice the stiffness (nothing on the other side to fight). Positive separations
 // (speculative points) use bias = s / h, which lets a body close the gap exactly in one
-// substep and no further: fast bodies stop at thin ones instead of tunnelling.
+// substep and no further: fast bodies stop at thin ones instead of tunnelling. Where touching
+// bodies differ in mass tenfold or more, one contact at a time fails (a light box under heavy
+// ones gives way): the contacts linked to them are a stack, put in the overflow, whose normal
+// rows are solved together there (contact_stack_solver.hpp).
 //
 // Settings (WorldDef): 5 substeps and 60 Hz where Box2D v3 uses 4 and 30 Hz. A soft contact
 // under load sags by load / (effective mass * omega^2); at 30 Hz the bottom of the 100-row
@@ -38,6 +41,7 @@
 
 #include "constraint_graph.hpp"
 #include "contact_kernels.hpp"
+#include "contact_stack_solver.hpp"
 #include "joint_solver.hpp"
 #include "run_counts.hpp"
 #include "task_runner.hpp"
@@ -66,6 +70,8 @@ void ContactSolver::begin(std::span<const ConstraintBodies> constraints, std::in
                           bool wide, TaskRunner& tasks) {
   wide_mode_ = wide;
   bouncy_ = false;
+  stack_members_.clear();
+  stack_begin_.clear();
   still_ = still;
   restitution_.clear();
   findings_.resize(tasks.workers());
@@ -181,7 +187,20 @@ void ContactSolver::set(std::uint32_t index, const ContactConstraint& constraint
   scalar_[slot_[index] & ~kScalar] = constraint;
 }
 
+void ContactSolver::set_stacks(std::span<const std::uint32_t> members,
+                               std::span<const std::uint32_t> stack_begin) {
+  stack_members_.assign(members.begin(), members.end());
+  stack_begin_.assign(stack_begin.begin(), stack_begin.end());
+}
+
 void ContactSolver::finish() {
+  stacked_.assign(stack_members_.empty() ? 0 : scalar_.size(), 0);
+  for (std::uint32_t& member : stack_members_) {
+    member = slot_[member] & ~kScalar;
+    stacked_[member] = 1;
+  }
+  if (!stack_solver_) stack_solver_ = std::make_unique<ContactStackSolver>();
+  stack_solver_->build(scalar_, stack_members_, stack_begin_);
   // Bounce in colour order, as the one-at-a-time twin does. A worker takes its ranges of
   // batches in order, so each worker's bounces come in order (sorted here when a task system
   // ran them otherwise), and the workers' lists are merged one into the next, rather than
@@ -395,9 +414,14 @@ void ContactSolver::solve(std::span<SolverBody> bodies, std::span<const SolverBo
           solve_wide(body_data, wide + begin, wide + end, max_data ? max_data + begin : nullptr,
                      inv_h, max_push, use_bias);
         } else {
+          const bool stacks = overflow && !self.stacked_.empty();
           for (std::uint32_t i = begin; i < end; ++i) {
+            if (stacks && self.stacked_[i] != 0) continue;
             solve_one(body_data, self.scalar_[i], inv_h, max_push, use_bias);
           }
+          // The overflow is one block: its stacks after its lone constraints (they share
+          // no moving body).
+          if (stacks) self.stack_solver_->solve(body_data, self.scalar_, inv_h, max_push, use_bias);
         }
         return;
       }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <utility>
 #include <vector>
@@ -119,6 +120,7 @@ struct WideConstraint;
 class JointStages;
 
 struct WideMaxImpulse;
+class ContactStackSolver;
 
 // The bodies of one constraint (indices into the solver body array), and whether the solver
 // can change each one's velocity (kinematic bodies and the still body it cannot: they never
@@ -179,6 +181,11 @@ class ContactSolver {
   // softness between two moving bodies, `fixed_soft` against one the solver cannot move.
   void build_batch(std::uint32_t batch, std::span<const BatchLane> lanes, std::uint32_t two_points,
                    const Softness& soft, const Softness& fixed_soft, std::uint32_t worker);
+  // The constraints (indices as passed to begin, each of the overflow) solved as contact stacks
+  // (contact_stack_solver.hpp), stack after stack; `stack_begin`: where each stack starts,
+  // one past the last at the end. After begin(), before finish(); none unless called.
+  void set_stacks(std::span<const std::uint32_t> members,
+                  std::span<const std::uint32_t> stack_begin);
   void finish();
   // `joints`, when given, runs its part of each stage before the contacts.
   // The stages run on the task runner's workers, each colour split into blocks; the result
@@ -190,6 +197,7 @@ class ContactSolver {
 
   std::size_t color_count() const noexcept;
   std::size_t overflow_count() const noexcept { return overflow_count_; }
+  std::size_t stacked_count() const noexcept { return stack_members_.size(); }
 
  private:
   bool wide_mode_ = true;
@@ -202,6 +210,11 @@ class ContactSolver {
   std::vector<std::uint32_t> slot_;
   std::vector<std::uint32_t> order_;  // constraint indices by slot
   std::vector<ContactConstraint> scalar_;
+  // The contact stacks: their constraints (set_stacks' indices, then finish()'s positions in
+  // scalar_) and where each stack starts; per position in scalar_, whether it is in one.
+  std::vector<std::uint32_t> stack_members_, stack_begin_;
+  std::vector<std::uint8_t> stacked_;
+  std::unique_ptr<ContactStackSolver> stack_solver_;
   std::vector<std::uint32_t> color_begin_;  // colour positions, one past the last at the end
   LargeVector<WideConstraint> wide_;
   std::vector<std::uint32_t> wide_begin_;   // into wide_, per colour

@@ -2,11 +2,13 @@
 // substepped soft-step solve, write poses back and finish the step's bookkeeping.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
 
 #include "contact_kernels.hpp"
+#include "contact_stack_solver.hpp"
 #include "prefetch.hpp"
 #include "world_state.hpp"
 
@@ -105,7 +107,10 @@ void WorldState::prepare_contacts() {
   solver_to_body.assign(awake_list.begin(), awake_list.end());
   solver_info.resize(awake);
   // Each body's records are its own, so bodies are loaded in parallel.
-  tasks.parallel_for(awake, 256, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+  inverse_mass_ranges.assign(tasks.workers(), {});
+  solver_inv_mass.resize(awake);
+  tasks.parallel_for(awake, 256, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
+    InverseMassRange range = inverse_mass_ranges[worker];
     for (std::uint32_t k = begin; k < end; ++k) {
       // Bodies are records of several cache lines apart: ask for those a few ahead early.
       if (k + kPrefetchAhead < end) prefetch_solver_setup(bodies[awake_list[k + kPrefetchAhead]]);
@@ -113,6 +118,7 @@ void WorldState::prepare_contacts() {
       Body& b = bodies[i];
       body_solver_index[i] = static_cast<std::int32_t>(k);
       solver_info[k] = {b.center.x(), b.center.y(), b.inv_mass, b.inv_inertia};
+      solver_inv_mass[k] = static_cast<float>(b.inv_mass);
       // The solver is single precision and squares speeds: a velocity set beyond the speed
       // limits, or a push of a huge force, is scaled down here in double precision (1e300 m/s
       // became infinite there and the body NaN). Velocities go to the limits, where the solver
@@ -143,10 +149,13 @@ void WorldState::prepare_contacts() {
         p.linear_damping = 1 / (1 + h * b.linear_damping);
         p.angular_damping = 1 / (1 + h * b.angular_damping);
         p.dynamic = true;
+        range.least = std::min(range.least, b.inv_mass);
+        range.greatest = std::max(range.greatest, b.inv_mass);
       }
       p.far_mass_centre = b.local_center.norm() > max_world_coordinate / 2;
       solver_params[k] = p;
     }
+    inverse_mass_ranges[worker] = range;
   });
   const auto still = static_cast<std::int32_t>(solver_bodies.size());
   still_body = still;
@@ -165,8 +174,21 @@ void WorldState::prepare_contacts() {
   // solver colours them next, then each constraint is built straight into its slot.
   const LargeVector<StepContactKey>& keys = current_step_contact_keys();
   constraint_bodies.resize(step_contacts.size());
+  // Contact stacks need bodies 10 times apart in mass; most worlds have none.
+  Real least = std::numeric_limits<Real>::infinity(), greatest = 0;
+  for (const InverseMassRange& range : inverse_mass_ranges) {
+    least = std::min(least, range.least);
+    greatest = std::max(greatest, range.greatest);
+  }
+  stacks_possible = greatest >= detail::kStackMassRatio * least;
+  if (stacks_possible) lopsided_marks.reset(keys.size(), tasks.workers());
+  const auto lopsided = [&](std::int32_t ia, std::int32_t ib) {
+    const float ma = solver_inv_mass[static_cast<std::size_t>(ia)];
+    const float mb = solver_inv_mass[static_cast<std::size_t>(ib)];
+    return std::max(ma, mb) >= static_cast<float>(detail::kStackMassRatio) * std::min(ma, mb);
+  };
   tasks.parallel_for(static_cast<std::uint32_t>(keys.size()), 1024,
-                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
                        for (std::uint32_t k = begin; k < end; ++k) {
                          const StepContactKey& key = keys[k];
                          const std::int32_t ia = body_solver_index[key.body_a];
@@ -182,9 +204,15 @@ void WorldState::prepare_contacts() {
                              ia < 0 ? still : ia,   ib < 0 ? still : ib, ia < 0 || key.a_fixed,
                              ib < 0 || key.b_fixed, key.color,           key.hit_events,
                              key.point_count};
+                         if (stacks_possible && ia >= 0 && ib >= 0 && !key.a_fixed &&
+                             !key.b_fixed && lopsided(ia, ib)) {
+                           lopsided_marks.mark(k, worker);
+                         }
                        }
                      });
+  find_contact_stacks();
   contact_solver.begin(constraint_bodies, still, def.simd_solver, tasks);
+  if (!stack_members.empty()) contact_solver.set_stacks(stack_members, stack_begin);
 
   // Per-constraint body data comes from the compact solver arrays and the contact's seed, not
   // the body and contact records.
@@ -320,6 +348,82 @@ void WorldState::prepare_contacts() {
 
   counters.constraint_colors = contact_solver.color_count();
   counters.overflow_constraints = contact_solver.overflow_count();
+}
+
+// A stack is the set of constraints linked through moving bodies to a constraint between
+// two lopsided ones (kStackMassRatio), when it has at most kMaxStackRows points: found by a
+// walk from that constraint over its bodies' contact lists, given up as soon as it passes
+// the limit (a set that large stays one contact at a time), so a world pays for its lopsided
+// constraints' neighbourhoods only. Stacks come in the order of their first lopsided
+// constraint, each one's constraints in order.
+void WorldState::find_contact_stacks() {
+  stack_members.clear();
+  stack_begin.clear();
+  counters.stacked_constraints = 0;
+  if (!stacks_possible) return;
+  constexpr std::uint8_t kStackNone = 0, kStackTaken = 1, kStackTooLarge = 2;
+  stack_seen.assign(solver_to_body.size(), kStackNone);
+  // A body with more contacts than this is taken for one in a set too large, unwalked.
+  constexpr std::size_t kMostContacts = 4 * detail::kMaxStackRows;
+  const auto moving = [&](std::uint32_t body, bool fixed) {
+    return !fixed && body_solver_index[body] >= 0;
+  };
+  lopsided_marks.for_each_marked([&](std::uint32_t seed) {
+    const detail::ConstraintBodies& first = constraint_bodies[seed];
+    if (stack_seen[static_cast<std::size_t>(first.a)] != kStackNone ||
+        stack_seen[static_cast<std::size_t>(first.b)] != kStackNone) {
+      return;  // in a stack already, or in a set too large
+    }
+    stack_walk.assign({static_cast<std::uint32_t>(first.a), static_cast<std::uint32_t>(first.b)});
+    stack_found.clear();
+    std::uint32_t rows = 0;
+    bool too_large = false;
+    for (std::size_t next = 0; next < stack_walk.size() && !too_large; ++next) {
+      const Body& b = bodies[solver_to_body[stack_walk[next]]];
+      if (b.contacts.size() > kMostContacts) {
+        too_large = true;
+        break;
+      }
+      for (const std::uint32_t ci : b.contacts) {
+        const Contact& c = contacts[ci];
+        if (c.manifold.point_count == 0) continue;
+        // The step's contacts are in contact order.
+        const auto at = std::lower_bound(step_contacts.begin(), step_contacts.end(), ci);
+        if (at == step_contacts.end() || *at != ci) continue;
+        const auto r = static_cast<std::uint32_t>(at - step_contacts.begin());
+        if (constraint_bodies[r].color == detail::kNoColor) continue;
+        if (std::find(stack_found.begin(), stack_found.end(), r) != stack_found.end()) continue;
+        stack_found.push_back(r);
+        rows += constraint_bodies[r].point_count;
+        if (rows > detail::kMaxStackRows) {
+          too_large = true;
+          break;
+        }
+        const std::array<std::pair<std::uint32_t, bool>, 2> ends{
+            {{c.body_a, c.a_fixed}, {c.body_b, c.b_fixed}}};
+        for (const auto& [body, fixed] : ends) {
+          if (!moving(body, fixed)) continue;
+          const auto si = static_cast<std::uint32_t>(body_solver_index[body]);
+          if (stack_seen[si] == kStackTooLarge) {
+            too_large = true;
+          } else if (std::find(stack_walk.begin(), stack_walk.end(), si) == stack_walk.end()) {
+            stack_walk.push_back(si);
+          }
+        }
+      }
+    }
+    for (const std::uint32_t si : stack_walk)
+      stack_seen[si] = too_large ? kStackTooLarge : kStackTaken;
+    if (too_large) return;
+    std::sort(stack_found.begin(), stack_found.end());
+    if (stack_begin.empty()) stack_begin.push_back(0);
+    for (const std::uint32_t r : stack_found) {
+      stack_members.push_back(r);
+      constraint_bodies[r].color = detail::kOverflowColor;
+    }
+    stack_begin.push_back(static_cast<std::uint32_t>(stack_members.size()));
+  });
+  counters.stacked_constraints = stack_members.size();
 }
 
 void WorldState::write_back(std::uint32_t solver_index) {

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "body.hpp"
@@ -145,6 +146,21 @@ struct WorldState {
   std::vector<std::uint8_t> stopped;
   LargeVector<detail::SolverBodyInfo> solver_info;
   LargeVector<detail::ConstraintBodies> constraint_bodies;  // per step contact
+  // Per worker while solver bodies load: the least and greatest inverse mass of the dynamic
+  // bodies it loaded (contact stacks are looked for only where they differ enough).
+  struct InverseMassRange {
+    Real least = std::numeric_limits<Real>::infinity(), greatest = 0;
+  };
+  std::vector<InverseMassRange> inverse_mass_ranges;
+  // Finding the contact stacks (find_contact_stacks): per solver body its inverse mass, in a
+  // compact array; the constraints between lopsided moving bodies, marked as they are made;
+  // per solver body whether a walk met it (kStackNone, in a stack, or in a set too large);
+  // the stacks' constraints and where each stack starts; the walk's scratch.
+  std::vector<float> solver_inv_mass;
+  bool stacks_possible = false;
+  detail::WorkerMarks lopsided_marks;
+  std::vector<std::uint8_t> stack_seen;
+  std::vector<std::uint32_t> stack_members, stack_begin, stack_walk, stack_found;
   detail::ContactSolver contact_solver;
   std::int32_t still_body = 0;                   // the solver body standing in for the unmoving
   std::vector<std::uint32_t> step_joints;        // joints of moving bodies this step, solve order
@@ -247,6 +263,9 @@ struct WorldState {
   void finish_joint(std::uint32_t k, Real inv_h);  // joint_order[k]; substeps of 1 / inv_h
   // solver_stages.cpp
   void prepare_contacts();
+  // The step's contact stacks (contact_stack_solver.hpp) into the contact solver, their
+  // constraints moved to the overflow.
+  void find_contact_stacks();
   void solve();
   // Solver body `solver_index`'s velocity and pose back into its body record.
   void write_back(std::uint32_t solver_index);

@@ -134,6 +134,7 @@ py::dict counters_dict(const StepCounters& c) {
   out["islands"] = c.islands;
   out["constraint_colors"] = c.constraint_colors;
   out["overflow_constraints"] = c.overflow_constraints;
+  out["stacked_constraints"] = c.stacked_constraints;
   out["joints"] = c.joints;
   out["fast_bodies"] = c.fast_bodies;
   out["continuous_hits"] = c.continuous_hits;

@@ -92,9 +92,12 @@ struct StepCounters {
   std::size_t islands = 0;               ///< awake islands
   std::size_t constraint_colors = 0;     ///< graph colours the solver used
   std::size_t overflow_constraints = 0;  ///< contacts solved one at a time (colours ran out)
-  std::size_t joints = 0;                ///< joints the solver ran (of moving bodies)
-  std::size_t fast_bodies = 0;           ///< bodies swept by continuous collision
-  std::size_t continuous_hits = 0;       ///< of those, stopped short at a first touch
+  /// Of those, the contacts of stacks with bodies of very different masses (10:1 or more),
+  /// their pushes solved as one system so that light bodies under heavy ones hold.
+  std::size_t stacked_constraints = 0;
+  std::size_t joints = 0;           ///< joints the solver ran (of moving bodies)
+  std::size_t fast_bodies = 0;      ///< bodies swept by continuous collision
+  std::size_t continuous_hits = 0;  ///< of those, stopped short at a first touch
 };
 
 /// @brief Wall time of each phase of the last step, in milliseconds (for tuning; never for tests).
