@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -28,6 +29,10 @@ inline constexpr int kMaxStackRows = 32;
 // Two touching bodies make a stack when one's inverse mass is at least this many times the
 // other's; below it Gauss-Seidel carries the load well enough (a 1:100 stack stands on it).
 inline constexpr double kStackMassRatio = 10;
+// A body with more contacts than this is in no stack (it would be in a set too large), so a
+// world whose lopsided masses are all such bodies (a heavy drum or spinner among its load)
+// spends nothing looking.
+inline constexpr std::size_t kMostStackBodyContacts = 4 * kMaxStackRows;
 
 // The linear complementarity problem w = K x + q, x >= 0, w >= 0, x . w = 0, K an n x n
 // symmetric positive definite matrix (row-major, n <= kMaxStackRows), by principal pivoting

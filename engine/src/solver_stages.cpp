@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <numbers>
 
 #include "contact_kernels.hpp"
@@ -118,7 +119,11 @@ void WorldState::prepare_contacts() {
       Body& b = bodies[i];
       body_solver_index[i] = static_cast<std::int32_t>(k);
       solver_info[k] = {b.center.x(), b.center.y(), b.inv_mass, b.inv_inertia};
-      solver_inv_mass[k] = static_cast<float>(b.inv_mass);
+      // NaN: lopsided with nothing.
+      const bool could_stack =
+          b.type == BodyType::dynamic && b.contacts.size() <= detail::kMostStackBodyContacts;
+      solver_inv_mass[k] =
+          could_stack ? static_cast<float>(b.inv_mass) : std::numeric_limits<float>::quiet_NaN();
       // The solver is single precision and squares speeds: a velocity set beyond the speed
       // limits, or a push of a huge force, is scaled down here in double precision (1e300 m/s
       // became infinite there and the body NaN). Velocities go to the limits, where the solver
@@ -149,8 +154,10 @@ void WorldState::prepare_contacts() {
         p.linear_damping = 1 / (1 + h * b.linear_damping);
         p.angular_damping = 1 / (1 + h * b.angular_damping);
         p.dynamic = true;
-        range.least = std::min(range.least, b.inv_mass);
-        range.greatest = std::max(range.greatest, b.inv_mass);
+        if (could_stack) {
+          range.least = std::min(range.least, b.inv_mass);
+          range.greatest = std::max(range.greatest, b.inv_mass);
+        }
       }
       p.far_mass_centre = b.local_center.norm() > max_world_coordinate / 2;
       solver_params[k] = p;
@@ -174,7 +181,8 @@ void WorldState::prepare_contacts() {
   // solver colours them next, then each constraint is built straight into its slot.
   const LargeVector<StepContactKey>& keys = current_step_contact_keys();
   constraint_bodies.resize(step_contacts.size());
-  // Contact stacks need bodies 10 times apart in mass; most worlds have none.
+  // Contact stacks need bodies 10 times apart in mass that could be in one; most worlds have
+  // none.
   Real least = std::numeric_limits<Real>::infinity(), greatest = 0;
   for (const InverseMassRange& range : inverse_mass_ranges) {
     least = std::min(least, range.least);
@@ -185,7 +193,8 @@ void WorldState::prepare_contacts() {
   const auto lopsided = [&](std::int32_t ia, std::int32_t ib) {
     const float ma = solver_inv_mass[static_cast<std::size_t>(ia)];
     const float mb = solver_inv_mass[static_cast<std::size_t>(ib)];
-    return std::max(ma, mb) >= static_cast<float>(detail::kStackMassRatio) * std::min(ma, mb);
+    const auto ratio = static_cast<float>(detail::kStackMassRatio);
+    return ma >= ratio * mb || mb >= ratio * ma;  // false with a NaN
   };
   tasks.parallel_for(static_cast<std::uint32_t>(keys.size()), 1024,
                      [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
@@ -363,8 +372,6 @@ void WorldState::find_contact_stacks() {
   if (!stacks_possible) return;
   constexpr std::uint8_t kStackNone = 0, kStackTaken = 1, kStackTooLarge = 2;
   stack_seen.assign(solver_to_body.size(), kStackNone);
-  // A body with more contacts than this is taken for one in a set too large, unwalked.
-  constexpr std::size_t kMostContacts = 4 * detail::kMaxStackRows;
   const auto moving = [&](std::uint32_t body, bool fixed) {
     return !fixed && body_solver_index[body] >= 0;
   };
@@ -380,7 +387,7 @@ void WorldState::find_contact_stacks() {
     bool too_large = false;
     for (std::size_t next = 0; next < stack_walk.size() && !too_large; ++next) {
       const Body& b = bodies[solver_to_body[stack_walk[next]]];
-      if (b.contacts.size() > kMostContacts) {
+      if (b.contacts.size() > detail::kMostStackBodyContacts) {
         too_large = true;
         break;
       }
