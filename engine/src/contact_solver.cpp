@@ -16,8 +16,9 @@
 // (speculative points) use bias = s / h, which lets a body close the gap exactly in one
 // substep and no further: fast bodies stop at thin ones instead of tunnelling. Where touching
 // bodies differ in mass tenfold or more, one contact at a time fails (a light box under heavy
-// ones gives way): the contacts linked to them are a stack, put in the overflow, whose normal
-// rows are solved together there (contact_stack_solver.hpp).
+// ones gives way): where the contacts linked to them form a path (a column), they are a
+// stack, put in the overflow, whose normal rows are solved together there
+// (contact_stack_solver.hpp).
 //
 // Settings (WorldDef): 5 substeps and 60 Hz where Box2D v3 uses 4 and 30 Hz. A soft contact
 // under load sags by load / (effective mass * omega^2); at 30 Hz the bottom of the 100-row
@@ -191,6 +192,10 @@ void ContactSolver::set_stacks(std::span<const std::uint32_t> members,
                                std::span<const std::uint32_t> stack_begin) {
   stack_members_.assign(members.begin(), members.end());
   stack_begin_.assign(stack_begin.begin(), stack_begin.end());
+}
+
+std::size_t ContactSolver::stacked_count() const noexcept {
+  return stack_solver_ ? stack_solver_->direct_constraints() : 0;
 }
 
 void ContactSolver::finish() {

@@ -197,7 +197,8 @@ class ContactSolver {
 
   std::size_t color_count() const noexcept;
   std::size_t overflow_count() const noexcept { return overflow_count_; }
-  std::size_t stacked_count() const noexcept { return stack_members_.size(); }
+  // The constraints of contact stacks solved together.
+  std::size_t stacked_count() const noexcept;
 
  private:
   bool wide_mode_ = true;

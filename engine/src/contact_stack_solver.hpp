@@ -16,15 +16,19 @@ namespace mink::detail {
 // stiffness is its effective mass times omega^2, and a light body's contact carrying a heavy
 // load sags by load / (its mass * omega^2): 14 cm at 60 Hz.
 //
-// Where touching bodies of very different masses meet, the contacts of the bodies linked to
-// them form a stack (up to kMaxStackRows normal rows), and its normal rows are solved at once
-// in every solve and relax pass: the linear complementarity problem of all the rows (pushes
-// never pull, a row that pushes stops its approach) by principal pivoting on the rows' exact
-// coupling K = J M^-1 J^T. The softness is the soft step's with K in place of one row's
-// effective mass: the new impulses x solve K x = ms (K lambda - v - bias), ms the row's mass
-// scale, which for a lone row is exactly the one-at-a-time update. A row then sags by its
-// bodies' own net load, not by all the weight it carries: the 1 kg box by g / omega^2. The
-// stacks' friction stays one contact at a time, after the normal rows, as in solve_one.
+// Where touching bodies of very different masses meet and the contacts of the bodies linked
+// to them form a path (each moving body in at most two; find_contact_stacks in
+// solver_stages.cpp says why), they are a stack (up to kMaxStackRows normal rows), whose
+// normal rows are solved at once in every solve and relax pass: the linear complementarity problem
+// of all the rows (pushes never pull, a row that pushes stops its approach) by principal pivoting
+// on the rows' exact coupling K = J M^-1 J^T. The softness is the soft step's with K in place of
+// one row's effective mass: the new impulses x solve K x = ms (K lambda - v - bias), ms the row's
+// mass scale, which for a lone row is exactly the one-at-a-time update. A row then sags by the
+// acceleration its pushes give its two bodies apart, over omega^2, not by all the weight it
+// carries over one body's mass: in a column at rest the ground's contact sags by g / omega^2
+// and the others not at all. A stack whose rows repeat one another (a box on two ground
+// shapes) is solved one contact at a time. The stacks' friction stays one contact at a time,
+// after the normal rows, as in solve_one.
 inline constexpr int kMaxStackRows = 32;
 // Two touching bodies make a stack when one's inverse mass is at least this many times the
 // other's; below it Gauss-Seidel carries the load well enough (a 1:100 stack stands on it).
@@ -54,6 +58,8 @@ class ContactStackSolver {
   void solve(SolverBody* bodies, std::span<ContactConstraint> constraints, SolverReal inv_h,
              SolverReal max_push, bool use_bias);
   std::size_t stack_count() const noexcept { return stacks_.size(); }
+  // The constraints of the stacks solved together (the others' rows repeat one another).
+  std::size_t direct_constraints() const noexcept { return direct_constraints_; }
   // Solves since build() that gave up at the pivot limit.
   std::uint64_t gave_up() const noexcept { return gave_up_; }
 
@@ -63,6 +69,7 @@ class ContactStackSolver {
     std::uint32_t row_begin, row_count;
     std::size_t matrix_begin;  // into matrices_: row_count^2, row-major
     std::uint32_t active;      // the last solve's pushing rows, the next one's guess
+    bool direct;               // its rows independent: solved together, else one at a time
   };
   struct Row {
     std::uint32_t constraint;
@@ -73,7 +80,9 @@ class ContactStackSolver {
   std::vector<Row> rows_;
   std::vector<double> matrices_;
   std::vector<double> q_, x_, impulses_;  // scratch, per row of a stack
+  std::vector<double> shapes_;            // scratch: a stack's unit-mass coupling
   std::uint64_t gave_up_ = 0;
+  std::size_t direct_constraints_ = 0;
 };
 
 }  // namespace mink::detail

@@ -92,8 +92,9 @@ struct StepCounters {
   std::size_t islands = 0;               ///< awake islands
   std::size_t constraint_colors = 0;     ///< graph colours the solver used
   std::size_t overflow_constraints = 0;  ///< contacts solved one at a time (colours ran out)
-  /// Of those, the contacts of stacks with bodies of very different masses (10:1 or more),
-  /// their pushes solved as one system so that light bodies under heavy ones hold.
+  /// Of those, the contacts of stacks with bodies of very different masses (10:1 or more)
+  /// that form a path (a column), their pushes solved as one system so that light bodies
+  /// under heavy ones hold.
   std::size_t stacked_constraints = 0;
   std::size_t joints = 0;           ///< joints the solver ran (of moving bodies)
   std::size_t fast_bodies = 0;      ///< bodies swept by continuous collision
