@@ -256,4 +256,18 @@ TEST(ContactStack, StacksKeepTheSolverTwinsAndWorkerCountsBitwiseEqual) {
   EXPECT_EQ(run(false, 3), reference);
 }
 
+// A snapshot taken while a stack is solved resumes it exactly, at another worker count too:
+// stacks are found afresh each step from the state (the warm-start impulses among it).
+TEST(ContactStack, ASnapshotResumesAStackExactly) {
+  Column column({1, 1000, 1, 1000});
+  for (int i = 0; i < 45; ++i) column.world.step();
+  ASSERT_GT(column.world.counters().stacked_constraints, 0u);
+  World resumed = World::from_snapshot(column.world.snapshot(), 2);
+  for (int i = 0; i < 120; ++i) {
+    column.world.step();
+    resumed.step();
+  }
+  EXPECT_EQ(test::state_hash(resumed), test::state_hash(column.world));
+}
+
 }  // namespace
