@@ -160,7 +160,8 @@ void ContactStackSolver::build(std::span<const ContactConstraint> constraints,
              static_cast<std::uint32_t>(rows_.size()),
              0,
              matrices_.size(),
-             0};
+             0,
+             false};
     for (std::uint32_t m = st.member_begin; m < st.member_end; ++m) {
       const ContactConstraint& c = constraints[members_[m]];
       for (int j = 0; j < c.point_count; ++j) {
