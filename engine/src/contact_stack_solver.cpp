@@ -20,22 +20,29 @@ constexpr double kRegularization = 1e-6;
 // are taken out: rows at an angle of about 6 degrees or more to every combination of others.
 constexpr double kLeastIndependence = 1e-2;
 
-// Solves K_AA y = rhs for the rows `index` (m of them) by Cholesky. False when K_AA is not
-// positive definite to working precision (non-finite input).
-bool cholesky_solve(const double* k, int n, const int* index, int m, const double* rhs, double* y,
-                    double* l) {
+// The Cholesky factor L (m x m, row-major) of K's rows and columns `index` (m of them).
+// False when a pivot is not positive to working precision (non-finite input) or keeps less
+// than `least_share` of its row's diagonal once the rows before it are taken out.
+bool cholesky(const double* k, int n, const int* index, int m, double least_share, double* l) {
   for (int i = 0; i < m; ++i) {
     for (int j = 0; j <= i; ++j) {
       double sum = k[index[i] * n + index[j]];
       for (int t = 0; t < j; ++t) sum -= l[i * m + t] * l[j * m + t];
       if (i == j) {
-        if (!(sum > 1e-300)) return false;
+        if (!(sum > 1e-300) || sum < least_share * k[index[i] * n + index[i]]) return false;
         l[i * m + i] = std::sqrt(sum);
       } else {
         l[i * m + j] = sum / l[j * m + j];
       }
     }
   }
+  return true;
+}
+
+// Solves K_AA y = rhs for the rows `index` (m of them); false as cholesky().
+bool cholesky_solve(const double* k, int n, const int* index, int m, const double* rhs, double* y,
+                    double* l) {
+  if (!cholesky(k, n, index, m, 0, l)) return false;
   for (int i = 0; i < m; ++i) {
     double sum = rhs[i];
     for (int t = 0; t < i; ++t) sum -= l[i * m + t] * y[t];
@@ -45,25 +52,6 @@ bool cholesky_solve(const double* k, int n, const int* index, int m, const doubl
     double sum = y[i];
     for (int t = i + 1; t < m; ++t) sum -= l[t * m + i] * y[t];
     y[i] = sum / l[i * m + i];
-  }
-  return true;
-}
-
-// Whether no row of the symmetric positive semidefinite n x n matrix `k` is within `share`
-// of a combination of the rows before it: each Cholesky pivot keeps at least that share of
-// its row's diagonal.
-bool independent_rows(std::vector<double>& k, int n, double share) {
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j <= i; ++j) {
-      double sum = k[i * n + j];
-      for (int t = 0; t < j; ++t) sum -= k[i * n + t] * k[j * n + t];
-      if (i == j) {
-        if (!(sum >= share * k[i * n + i]) || !(sum > 0)) return false;
-        k[i * n + i] = std::sqrt(sum);
-      } else {
-        k[i * n + j] = sum / k[j * n + j];
-      }
-    }
   }
   return true;
 }
@@ -152,7 +140,6 @@ void ContactStackSolver::build(std::span<const ContactConstraint> constraints,
   rows_.clear();
   matrices_.clear();
   members_.assign(members.begin(), members.end());
-  gave_up_ = 0;
   direct_constraints_ = 0;
   for (std::size_t s = 0; s + 1 < stack_begin.size(); ++s) {
     Stack st{stack_begin[s],
@@ -205,7 +192,11 @@ void ContactStackSolver::build(std::span<const ContactConstraint> constraints,
     // of freedom) leave the pushes along their common direction free, and targets that
     // disagree there (two penetrations) drive them without bound: such a stack is solved one
     // contact at a time, as without it.
-    st.direct = independent_rows(shapes_, static_cast<int>(n), kLeastIndependence);
+    std::array<int, kMaxStackRows> all{};
+    for (std::uint32_t r = 0; r < n; ++r) all[r] = static_cast<int>(r);
+    factor_.resize(std::size_t{n} * n);
+    st.direct = cholesky(shapes_.data(), static_cast<int>(n), all.data(), static_cast<int>(n),
+                         kLeastIndependence, factor_.data());
     if (st.direct) direct_constraints_ += st.member_end - st.member_begin;
     stacks_.push_back(st);
   }
@@ -214,10 +205,13 @@ void ContactStackSolver::build(std::span<const ContactConstraint> constraints,
 void ContactStackSolver::solve(SolverBody* bodies, std::span<ContactConstraint> constraints,
                                SolverReal inv_h, SolverReal max_push, bool use_bias) {
   for (Stack& st : stacks_) {
-    if (!st.direct) {
+    const auto one_at_a_time = [&] {
       for (std::uint32_t m = st.member_begin; m < st.member_end; ++m) {
         solve_one(bodies, constraints[members_[m]], inv_h, max_push, use_bias);
       }
+    };
+    if (!st.direct) {
+      one_at_a_time();
       continue;
     }
     const std::uint32_t n = st.row_count;
@@ -225,30 +219,25 @@ void ContactStackSolver::solve(SolverBody* bodies, std::span<ContactConstraint> 
     q_.resize(n);
     x_.resize(n);
     impulses_.resize(n);
-    // Per row: its speed plus bias, its mass scale (in x_ until the solve), its impulse.
+    for (std::uint32_t r = 0; r < n; ++r) {
+      const Row& row = rows_[st.row_begin + r];
+      impulses_[r] = constraints[row.constraint].points[row.point].normal_impulse;
+    }
+    // The soft step for all rows at once: K x = ms (K lambda - v - bias), as w = K x + q.
     for (std::uint32_t r = 0; r < n; ++r) {
       const Row& row = rows_[st.row_begin + r];
       const ContactConstraint& c = constraints[row.constraint];
       const ContactConstraintPoint& p = c.points[row.point];
       const PointBias pb = point_bias(c, separation_now(bodies[c.body_a], bodies[c.body_b], c, p),
                                       inv_h, max_push, use_bias);
-      q_[r] = double{load_pair(bodies, c).normal_speed(c, p)} + pb.bias;
-      x_[r] = pb.mass_scale;
-      impulses_[r] = p.normal_impulse;
-    }
-    // The soft step for all rows at once: K x = ms (K lambda - v - bias), as w = K x + q.
-    for (std::uint32_t r = 0; r < n; ++r) {
+      const double target = double{load_pair(bodies, c).normal_speed(c, p)} + pb.bias;
       double pushed = 0;
       for (std::uint32_t j = 0; j < n; ++j) pushed += k[r * n + j] * impulses_[j];
-      q_[r] = x_[r] * (q_[r] - pushed);
+      q_[r] = double{pb.mass_scale} * (target - pushed);
     }
     std::uint32_t active = st.active;
     if (!solve_complementarity(k, q_, static_cast<int>(n), x_, active)) {
-      // One contact at a time instead, as without a stack.
-      ++gave_up_;
-      for (std::uint32_t m = st.member_begin; m < st.member_end; ++m) {
-        solve_one(bodies, constraints[members_[m]], inv_h, max_push, use_bias);
-      }
+      one_at_a_time();  // as without a stack
       continue;
     }
     st.active = active;

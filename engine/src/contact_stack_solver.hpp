@@ -57,11 +57,8 @@ class ContactStackSolver {
   // at a time. Stacks share no moving body.
   void solve(SolverBody* bodies, std::span<ContactConstraint> constraints, SolverReal inv_h,
              SolverReal max_push, bool use_bias);
-  std::size_t stack_count() const noexcept { return stacks_.size(); }
   // The constraints of the stacks solved together (the others' rows repeat one another).
   std::size_t direct_constraints() const noexcept { return direct_constraints_; }
-  // Solves since build() that gave up at the pivot limit.
-  std::uint64_t gave_up() const noexcept { return gave_up_; }
 
  private:
   struct Stack {
@@ -80,8 +77,7 @@ class ContactStackSolver {
   std::vector<Row> rows_;
   std::vector<double> matrices_;
   std::vector<double> q_, x_, impulses_;  // scratch, per row of a stack
-  std::vector<double> shapes_;            // scratch: a stack's unit-mass coupling
-  std::uint64_t gave_up_ = 0;
+  std::vector<double> shapes_, factor_;   // scratch: a stack's unit-mass coupling, its factor
   std::size_t direct_constraints_ = 0;
 };
 

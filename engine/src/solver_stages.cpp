@@ -188,7 +188,7 @@ void WorldState::prepare_contacts() {
     least = std::min(least, range.least);
     greatest = std::max(greatest, range.greatest);
   }
-  stacks_possible = greatest >= detail::kStackMassRatio * least;
+  const bool stacks_possible = greatest >= detail::kStackMassRatio * least;
   if (stacks_possible) lopsided_marks.reset(keys.size(), tasks.workers());
   const auto lopsided = [&](std::int32_t ia, std::int32_t ib) {
     const float ma = solver_inv_mass[static_cast<std::size_t>(ia)];
@@ -219,7 +219,7 @@ void WorldState::prepare_contacts() {
                          }
                        }
                      });
-  find_contact_stacks();
+  find_contact_stacks(stacks_possible);
   contact_solver.begin(constraint_bodies, still, def.simd_solver, tasks);
   if (!stack_members.empty()) contact_solver.set_stacks(stack_members, stack_begin);
 
@@ -370,14 +370,22 @@ void WorldState::prepare_contacts() {
 // seed): in piles of boxes, balls and capsules 1000 times apart in mass, stacks of any shape
 // made more bodies fly than one contact at a time did, paths fewer. Stacks come in the order
 // of their first lopsided constraint, each one's constraints in order.
-void WorldState::find_contact_stacks() {
+void WorldState::find_contact_stacks(bool possible) {
   stack_members.clear();
   stack_begin.clear();
-  if (!stacks_possible) return;
+  if (!possible) return;
   constexpr std::uint8_t kStackNone = 0, kStackTaken = 1, kStackRefused = 2;
   stack_seen.assign(solver_to_body.size(), kStackNone);
   const auto moving = [&](std::uint32_t body, bool fixed) {
     return !fixed && body_solver_index[body] >= 0;
+  };
+  // Contact ci's constraint this step (the step's contacts are in contact order), if any.
+  constexpr std::uint32_t kNoConstraint = ~std::uint32_t{0};
+  const auto constraint_of = [&](std::uint32_t ci) {
+    const auto at = std::lower_bound(step_contacts.begin(), step_contacts.end(), ci);
+    if (at == step_contacts.end() || *at != ci) return kNoConstraint;
+    const auto r = static_cast<std::uint32_t>(at - step_contacts.begin());
+    return constraint_bodies[r].color == detail::kNoColor ? kNoConstraint : r;
   };
   lopsided_marks.for_each_marked([&](std::uint32_t seed) {
     const detail::ConstraintBodies& first = constraint_bodies[seed];
@@ -390,20 +398,16 @@ void WorldState::find_contact_stacks() {
     std::uint32_t rows = 0;
     bool refused = false;
     for (std::size_t next = 0; next < stack_walk.size() && !refused; ++next) {
-      const Body& b = bodies[solver_to_body[stack_walk[next]]];
-      if (b.contacts.size() > detail::kMostStackBodyContacts) {
-        refused = true;
+      if (std::isnan(solver_inv_mass[stack_walk[next]])) {
+        refused = true;  // too many contacts
         break;
       }
+      const Body& b = bodies[solver_to_body[stack_walk[next]]];
       int degree = 0;
       for (const std::uint32_t ci : b.contacts) {
         const Contact& c = contacts[ci];
-        if (c.manifold.point_count == 0) continue;
-        // The step's contacts are in contact order.
-        const auto at = std::lower_bound(step_contacts.begin(), step_contacts.end(), ci);
-        if (at == step_contacts.end() || *at != ci) continue;
-        const auto r = static_cast<std::uint32_t>(at - step_contacts.begin());
-        if (constraint_bodies[r].color == detail::kNoColor) continue;
+        const std::uint32_t r = c.manifold.point_count == 0 ? kNoConstraint : constraint_of(ci);
+        if (r == kNoConstraint) continue;
         if (++degree > 2) {
           refused = true;
           break;

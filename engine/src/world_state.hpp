@@ -153,11 +153,11 @@ struct WorldState {
   };
   std::vector<InverseMassRange> inverse_mass_ranges;
   // Finding the contact stacks (find_contact_stacks): per solver body its inverse mass, in a
-  // compact array; the constraints between lopsided moving bodies, marked as they are made;
-  // per solver body whether a walk met it (kStackNone, in a stack, or in a set too large);
-  // the stacks' constraints and where each stack starts; the walk's scratch.
+  // compact array (NaN for a body in no stack); the constraints between lopsided moving
+  // bodies, marked as they are made; per solver body whether a walk met it (none yet, in a
+  // stack, or in a set that is none); the stacks' constraints and where each stack starts;
+  // the walk's scratch.
   std::vector<float> solver_inv_mass;
-  bool stacks_possible = false;
   detail::WorkerMarks lopsided_marks;
   std::vector<std::uint8_t> stack_seen;
   std::vector<std::uint32_t> stack_members, stack_begin, stack_walk, stack_found;
@@ -263,9 +263,10 @@ struct WorldState {
   void finish_joint(std::uint32_t k, Real inv_h);  // joint_order[k]; substeps of 1 / inv_h
   // solver_stages.cpp
   void prepare_contacts();
-  // The step's contact stacks (contact_stack_solver.hpp) into the contact solver, their
-  // constraints moved to the overflow.
-  void find_contact_stacks();
+  // The step's contact stacks (contact_stack_solver.hpp), their constraints moved to the
+  // overflow; none unless `possible` (bodies 10 times apart in mass that could be in one), in
+  // which case prepare_contacts has marked the lopsided constraints.
+  void find_contact_stacks(bool possible);
   void solve();
   // Solver body `solver_index`'s velocity and pose back into its body record.
   void write_back(std::uint32_t solver_index);
