@@ -77,7 +77,7 @@ sanitize-test: deps-test
 # The engine tests that step on several threads (worker counts, an embedder's task system,
 # snapshots taken and restored across worker counts, the soak) under ThreadSanitizer, in their
 # own build dir; TSAN_TESTS='*' runs every engine test there (about 20 minutes on 2 cores).
-TSAN_TESTS ?= *WorkerCounts*:TaskSystem.*:Snapshot.*:Soak.*:Divergence.StopsAre*
+TSAN_TESTS ?= *WorkerCounts*:TaskSystem.*:Snapshot.*:Soak.*:Divergence.StopsAre*:Continuous.FastBodiesSettled*
 tsan-test: deps-test
 	cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMINK_BUILD_TESTS=ON \
 	  -DMINK_TSAN=ON $(SANITIZED_CMAKE_FLAGS)

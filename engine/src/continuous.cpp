@@ -11,6 +11,11 @@
 // surface). Each fast body's first touch is found from the sweeps of the step as solved, so
 // the bodies can be swept in parallel and in any order with the same result; a body stopped
 // short keeps its velocity, and its contact next step does the rest.
+//
+// Where fast bodies meet only still shapes (continuous_fast_pairs off, no sensors), most are
+// settled as their step finishes, in parallel, while their records are at hand
+// (passes_unswept): nothing in the way, or only static shapes the cheap tests show them to
+// pass. Only the others get a record and a place in solve_continuous.
 
 #include "continuous.hpp"
 
@@ -324,6 +329,13 @@ Real travel_relative_to(const Sweep& moving, Real extent, const Sweep& frame) {
                             Rotation::from_angle(frame.angle1));
 }
 
+// Whether `passing` (WorldState::passing_shapes) holds every one of a body's `shape_count`
+// shapes: a body with more than 64 is always swept.
+bool all_pass(std::uint64_t passing, std::size_t shape_count) {
+  return shape_count > 0 && shape_count <= 64 &&
+         passing == (~std::uint64_t{0} >> (64 - shape_count));
+}
+
 }  // namespace
 
 // The first touch of `fast`'s shapes with `other_shape` moving by `other_world_sweep`, if it
@@ -391,6 +403,118 @@ void WorldState::sweep_pair(FastBody& fast, const detail::LocalSweep& local,
   }
 }
 
+// The static and kinematic shapes (every other shape, for a bullet) whose broadphase boxes meet
+// a fast body's box over the step, in shape order, each once (the order is fixed so the work
+// done is too, and a shape met by several of the body's shapes is swept once): from its
+// contacts when its shapes stayed within their broadphase boxes (the broadphase paired them
+// with all of those), else from queries.
+const std::vector<std::uint32_t>& WorldState::fixed_candidates(std::uint32_t fast_body,
+                                                               const Aabb& box, bool covered,
+                                                               bool bullet, std::uint32_t worker) {
+  std::vector<std::uint32_t>& found = continuous.candidates[worker];
+  found.clear();
+  if (covered && !bullet) {
+    const Body& body = bodies[fast_body];
+    // Up to the last of its contacts with something static or kinematic.
+    std::uint32_t left = body.fixed_contacts;
+    for (std::size_t k = 0; left > 0; ++k) {
+      const detail::Contact& contact = contacts[body.contacts[k]];
+      const bool a_is_fast = contact.body_a == fast_body;
+      if (!(a_is_fast ? contact.b_fixed : contact.a_fixed)) continue;
+      --left;
+      const std::uint32_t index = a_is_fast ? contact.shape_b : contact.shape_a;
+      if (broadphase.fat_aabb(shapes[index].proxy).overlaps(box)) found.push_back(index);
+    }
+  } else {
+    // A body that left its broadphase boxes (a fast body mostly has: they are fattened by a
+    // few centimetres only), or a bullet, which meets dynamic shapes too.
+    const auto add_shape = [&](ProxyId proxy, std::uint64_t user_data) {
+      const auto index = static_cast<std::uint32_t>(user_data);
+      if (index >= shapes.size()) return;
+      const Shape& o = shapes[index];
+      if (!o.alive || o.proxy != proxy || o.body == fast_body) return;
+      if (bullet || bodies[o.body].type != BodyType::dynamic) found.push_back(index);
+    };
+    if (bullet) {
+      std::vector<ProxyId>& proxies = continuous.proxies[worker];
+      proxies.clear();
+      broadphase.query(box, proxies);
+      for (const ProxyId proxy : proxies) add_shape(proxy, broadphase.user_data(proxy));
+    } else {
+      // The box is the body's own swept box, well formed.
+      broadphase.for_each_fixed(box, add_shape);
+    }
+  }
+  std::sort(found.begin(), found.end());
+  found.erase(std::unique(found.begin(), found.end()), found.end());
+  return found;
+}
+
+// A fast body's shapes carried over its step, in the worker's list, in the frame its pairs are
+// swept in: measured from where its centre of mass starts, which is returned.
+Vec2 WorldState::quick_shapes(std::uint32_t solver_index, std::uint32_t worker) {
+  const Body& b = bodies[solver_to_body[solver_index]];
+  const Vec2 frame_origin = start_center(solver_index);
+  const SweepEnds ends = quick_ends(b, solver_bodies[solver_index], frame_origin);
+  std::vector<detail::QuickShape>& quick = continuous.quick[worker];
+  quick.resize(b.shapes.size());
+  for (std::size_t k = 0; k < b.shapes.size(); ++k) {
+    quick[k] = quick_shape(shapes[b.shapes[k]].geometry, ends, b.local_center);
+  }
+  return frame_origin;
+}
+
+// Which of a fast body's shapes (a bit each by their place among the body's, the first 64;
+// `quick` the body's quick_shapes) the cheap tests show to pass by the still shape `still` at
+// `still_pose` without touching it: clear of one of its faces, or grazing a chain.
+std::uint64_t WorldState::passing_shapes(const Body& fast_body,
+                                         const std::vector<detail::QuickShape>& quick,
+                                         const ShapeGeometry& still, const Pose& still_pose) const {
+  const Real tolerance = 0.25 * def.linear_slop;
+  const auto* chain = std::get_if<ChainSegment>(&still);
+  std::uint64_t passing = 0;
+  for (std::size_t k = 0; k < fast_body.shapes.size() && k < 64; ++k) {
+    const bool passes =
+        (chain != nullptr &&
+         grazes_chain(quick[k], *chain, still_pose, kCoreFraction * fast_body.min_extent)) ||
+        clear_of_a_face(
+            quick[k], still, still_pose,
+            slop_target(shapes[fast_body.shapes[k]].geometry, still, def.linear_slop) + tolerance);
+    passing |= std::uint64_t{passes} << k;
+  }
+  return passing;
+}
+
+// From record_fast_body: whether the cheap tests show that every shape in a fast body's way
+// (not a bullet's) passes it by, so that it needs no sweep. Only static shapes are tested: a
+// kinematic body may be finishing its own step on another worker, and a body with one in its
+// way is left to solve_continuous.
+bool WorldState::passes_unswept(std::uint32_t solver_index, const Aabb& box, bool covered,
+                                std::uint32_t worker) {
+  const std::uint32_t body = solver_to_body[solver_index];
+  const std::vector<std::uint32_t>& found = fixed_candidates(body, box, covered, false, worker);
+  if (found.empty()) return true;
+  const Vec2 frame_origin = quick_shapes(solver_index, worker);
+  const std::vector<detail::QuickShape>& quick = continuous.quick[worker];
+  const Body& fast_body = bodies[body];
+  std::uint32_t other_body = kNoBody;
+  Pose other_start;
+  for (const std::uint32_t index : found) {
+    const Shape& still = shapes[index];
+    const Body& o = bodies[still.body];
+    if (o.type != BodyType::static_body) return false;
+    if (still.body != other_body) {
+      other_body = still.body;
+      other_start = pose_in_frame(o.center, o.rotation, o, frame_origin);
+    }
+    if (!all_pass(passing_shapes(fast_body, quick, still.geometry, other_start),
+                  fast_body.shapes.size())) {
+      return false;
+    }
+  }
+  return true;
+}
+
 // A body moved fast: translation plus turn at the extent against its thinnest half-width.
 bool WorldState::moved_fast(std::uint32_t si) const {
   const Body& b = bodies[solver_to_body[si]];
@@ -408,9 +532,18 @@ bool WorldState::moved_fast(std::uint32_t si) const {
 
 // From finish_body, while the body's records are at hand: a fast body's record, with its box
 // over the step and whether its broadphase boxes cover it.
-void WorldState::record_fast_body(std::uint32_t solver_index, const Aabb& swept, bool covered) {
+void WorldState::record_fast_body(std::uint32_t solver_index, const Aabb& swept, bool covered,
+                                  std::uint32_t worker) {
   const Body& b = bodies[solver_to_body[solver_index]];
-  continuous.is_fast[solver_index] = 1;
+  // Most fast bodies meet nothing a sweep is needed for: found here, while their records are
+  // at hand, they cost solve_continuous nothing. Fast bodies meeting each other, and sensors,
+  // need every fast body's sweep.
+  if (!b.bullet && !def.continuous_fast_pairs && sensors.empty() &&
+      passes_unswept(solver_index, swept, covered, worker)) {
+    continuous.is_fast[solver_index] = detail::ContinuousState::kClear;
+    return;
+  }
+  continuous.is_fast[solver_index] = detail::ContinuousState::kSwept;
   FastBody& record = continuous.fast[solver_index];
   record.body = solver_to_body[solver_index];
   record.solver_index = solver_index;
@@ -432,19 +565,21 @@ void WorldState::record_fast_body(std::uint32_t solver_index, const Aabb& swept,
 
 void WorldState::solve_continuous() {
   continuous.hits = 0;
+  counters.continuous_hits = 0;
   // The marked bodies, in body order (solver bodies are), so sensors meet them in a fixed
   // order.
   std::vector<std::uint32_t>& fast_list = continuous.fast_list;
   fast_list.clear();
+  std::size_t clear = 0;
   for (std::uint32_t si = 0; si < continuous.is_fast.size(); ++si) {
-    if (continuous.is_fast[si] != 0) fast_list.push_back(si);
+    const std::uint8_t mark = continuous.is_fast[si];
+    if (mark == detail::ContinuousState::kSwept) fast_list.push_back(si);
+    clear += mark == detail::ContinuousState::kClear ? 1 : 0;
   }
-  counters.fast_bodies = fast_list.size();
+  counters.fast_bodies = fast_list.size() + clear;
   if (fast_list.empty()) return;
 
   const auto count = static_cast<std::uint32_t>(fast_list.size());
-  continuous.candidates.resize(tasks.workers());
-  continuous.quick.resize(tasks.workers());
   // Fast bodies against each other: their boxes by lower x, so each finds its neighbours by a
   // short scan, those many times wider than the middle one apart.
   continuous.fast_by_x.clear();
@@ -486,7 +621,6 @@ void WorldState::solve_continuous() {
 
   continuous.stopped.reset(continuous.is_fast.size(), tasks.workers());
   tasks.parallel_for(count, 4, [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
-    std::vector<ProxyId> proxies;
     detail::LocalSweep local;
     for (std::uint32_t i = begin; i < end; ++i) {
       // Its first line only: the rest is read for the few with something in the way.
@@ -512,50 +646,8 @@ void WorldState::solve_continuous() {
         has_framed = true;
         sweep_pair(fast, local, shape, framed, settled);
       };
-      // Static and kinematic shapes (everything, for a bullet) whose broadphase boxes meet the
-      // body's box over the step: from its contacts when its shapes stayed within their
-      // broadphase boxes (the broadphase paired them with all of those), else from queries.
-      std::vector<std::uint32_t>& found = continuous.candidates[worker];
-      found.clear();
-      const auto add_if_met = [&](std::uint32_t index) {
-        const Shape& o = shapes[index];
-        if (broadphase.fat_aabb(o.proxy).overlaps(fast.box)) found.push_back(index);
-      };
-      if (fast.covered && !fast.bullet) {
-        const Body& body = bodies[fast.body];
-        // Up to the last of its contacts with something static or kinematic.
-        std::uint32_t left = body.fixed_contacts;
-        for (std::size_t k = 0; left > 0; ++k) {
-          const detail::Contact& contact = contacts[body.contacts[k]];
-          const bool a_is_fast = contact.body_a == fast.body;
-          if (!(a_is_fast ? contact.b_fixed : contact.a_fixed)) continue;
-          --left;
-          add_if_met(a_is_fast ? contact.shape_b : contact.shape_a);
-        }
-      } else {
-        // A body that left its broadphase boxes (a fast body mostly has: they are fattened by
-        // a few centimetres only), or a bullet, which meets dynamic shapes too.
-        const auto add_shape = [&](ProxyId proxy, std::uint64_t user_data) {
-          const auto index = static_cast<std::uint32_t>(user_data);
-          if (index >= shapes.size()) return;
-          const Shape& o = shapes[index];
-          if (!o.alive || o.proxy != proxy || o.body == fast.body) return;
-          if (fast.bullet || bodies[o.body].type != BodyType::dynamic) found.push_back(index);
-        };
-        if (fast.bullet) {
-          proxies.clear();
-          broadphase.query(fast.box, proxies);
-          for (const ProxyId proxy : proxies) add_shape(proxy, broadphase.user_data(proxy));
-        } else {
-          // The box is the body's own swept box, well formed.
-          broadphase.for_each_fixed(fast.box, add_shape);
-        }
-      }
-      // The same shape in any order of the broadphase gives the same first touch, but the
-      // order is fixed anyway so the work done is too (and a shape met by several of the
-      // body's shapes is swept once).
-      std::sort(found.begin(), found.end());
-      found.erase(std::unique(found.begin(), found.end()), found.end());
+      const std::vector<std::uint32_t>& found =
+          fixed_candidates(fast.body, fast.box, fast.covered, fast.bullet, worker);
       const Real slow = fast.slow;
       const Body& fast_record = bodies[fast.body];
       const std::vector<std::uint32_t>& fast_shapes = fast_record.shapes;
@@ -563,21 +655,14 @@ void WorldState::solve_continuous() {
       // grazes_chain) on the body's shapes at the ends of its step, found from its records for
       // the first such pair; its sweep, with the arc tangents of its angles, waits for a pair
       // they leave.
-      std::vector<detail::QuickShape>& quick = continuous.quick[worker];
+      const std::vector<detail::QuickShape>& quick = continuous.quick[worker];
       bool has_quick = false;
       Vec2 frame_origin{0, 0};
       const auto ensure_quick = [&] {
         if (has_quick) return;
         has_quick = true;
-        frame_origin = start_center(fast.solver_index);
-        const SweepEnds ends =
-            quick_ends(fast_record, solver_bodies[fast.solver_index], frame_origin);
-        quick.resize(fast_shapes.size());
-        for (std::size_t k = 0; k < fast_shapes.size(); ++k) {
-          quick[k] = quick_shape(shapes[fast_shapes[k]].geometry, ends, fast_record.local_center);
-        }
+        frame_origin = quick_shapes(fast.solver_index, worker);
       };
-      const Real tolerance = 0.25 * def.linear_slop;
       // A body's shapes lie side by side in `found` (shape indices of one body mostly are):
       // what is found of the body is found once for them. A static body stands still, and its
       // sweep is needed only for a pair the cheap tests leave.
@@ -605,22 +690,9 @@ void WorldState::solve_continuous() {
           sweep_with(index, other, 0);
           continue;
         }
-        const ShapeGeometry& still = shapes[index].geometry;
-        const auto* chain = std::get_if<ChainSegment>(&still);
-        std::uint64_t settled = 0;
-        for (std::size_t k = 0; k < fast_shapes.size() && k < 64; ++k) {
-          const bool passes =
-              (chain != nullptr && grazes_chain(quick[k], *chain, other_start,
-                                                kCoreFraction * fast_record.min_extent)) ||
-              clear_of_a_face(
-                  quick[k], still, other_start,
-                  slop_target(shapes[fast_shapes[k]].geometry, still, def.linear_slop) + tolerance);
-          settled |= std::uint64_t{passes} << k;
-        }
-        if (fast_shapes.size() <= 64 &&
-            settled == (~std::uint64_t{0} >> (64 - fast_shapes.size()))) {
-          continue;
-        }
+        const std::uint64_t settled =
+            passing_shapes(fast_record, quick, shapes[index].geometry, other_start);
+        if (all_pass(settled, fast_shapes.size())) continue;
         if (!has_other) {
           other = body_sweep(body);
           has_other = true;

@@ -110,15 +110,24 @@ struct LocalSweep {
 // Continuous collision's per-step lists: the fast bodies in body order, and per worker the
 // broadphase candidates of the body it is sweeping.
 struct ContinuousState {
-  // Per solver body, set by finish_body in parallel: whether it moved fast, and its FastBody
-  // if it did (a record kept from step to step, valid only where is_fast is not 0).
+  // Per solver body, set by finish_body in parallel: whether it moved fast (kNotFast, else
+  // kSwept or kClear), and its FastBody if it is to be swept (a record kept from step to step,
+  // valid only where is_fast is kSwept).
+  static constexpr std::uint8_t kNotFast = 0;
+  static constexpr std::uint8_t kSwept = 1;  // solve_continuous sweeps it
+  // Fast, but finish_body found nothing in its way that the cheap tests leave: nothing to
+  // sweep, and no record written (most fast bodies, in free flight).
+  static constexpr std::uint8_t kClear = 2;
   std::vector<std::uint8_t> is_fast;
   std::vector<FastBody> fast;
-  void prepare_marks(std::size_t solver_bodies) {
-    is_fast.assign(solver_bodies, 0);
+  void prepare_marks(std::size_t solver_bodies, std::uint32_t workers) {
+    is_fast.assign(solver_bodies, kNotFast);
     if (fast.size() < solver_bodies) fast.resize(solver_bodies);
+    candidates.resize(workers);
+    proxies.resize(workers);
+    quick.resize(workers);
   }
-  // The step's fast bodies, by solver index (so in body order, as sensors meet them).
+  // The step's fast bodies to sweep, by solver index (so in body order, as sensors meet them).
   std::vector<std::uint32_t> fast_list;
   FastBody& fast_body(std::size_t k) { return fast[fast_list[k]]; }
   const FastBody& fast_body(std::size_t k) const { return fast[fast_list[k]]; }
@@ -131,8 +140,11 @@ struct ContinuousState {
   std::vector<std::uint32_t> fast_wide;
   std::vector<Real> widths;   // scratch
   std::vector<Real> lower_x;  // the fast bodies' boxes' lower x, side by side for the sort
+  // Per worker: the shapes in the way of the fast body it is looking at, the broadphase's
+  // answer for a bullet, and the body's shapes at the ends of its step.
   std::vector<std::vector<std::uint32_t>> candidates;
-  std::vector<std::vector<QuickShape>> quick;  // per worker: its fast body's shapes
+  std::vector<std::vector<ProxyId>> proxies;
+  std::vector<std::vector<QuickShape>> quick;
   // The fast bodies (by solver index) stopped short this step, marked by the workers.
   WorkerMarks stopped;
   std::size_t hits = 0;  // fast bodies stopped short this step

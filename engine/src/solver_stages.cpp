@@ -522,14 +522,14 @@ void WorldState::solve() {
   }
 
   // Each body's step finished in one visit while its records are at hand, bodies in parallel.
-  if (def.enable_continuous) continuous.prepare_marks(solver_to_body.size());
+  if (def.enable_continuous) continuous.prepare_marks(solver_to_body.size(), tasks.workers());
   boxes_left.assign(solver_to_body.size(), 0);
   solver_turned.resize(step_joints.empty() ? 0 : solver_to_body.size());
   tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 128,
-                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t) {
+                     [&](std::uint32_t begin, std::uint32_t end, std::uint32_t worker) {
                        for (std::uint32_t si = begin; si < end; ++si) {
                          prefetch_finish_ahead(si, end, nullptr);
-                         finish_body(si);
+                         finish_body(si, worker);
                        }
                      });
 }
@@ -537,7 +537,7 @@ void WorldState::solve() {
 // Its pose and velocity back from the solver, its shapes' boxes at the new pose (the
 // broadphase takes them in finish_step), its sleep timer, and whether continuous collision
 // must sweep it.
-void WorldState::finish_body(std::uint32_t solver_index) {
+void WorldState::finish_body(std::uint32_t solver_index, std::uint32_t worker) {
   if (!solver_turned.empty()) {
     solver_turned[solver_index] = detail::delta_angle(solver_bodies[solver_index]);
   }
@@ -572,7 +572,9 @@ void WorldState::finish_body(std::uint32_t solver_index) {
   } else {
     b.sleep_time += dt;
   }
-  if (fast) record_fast_body(solver_index, swept, has_proxies && boxes_left[solver_index] == 0);
+  if (fast) {
+    record_fast_body(solver_index, swept, has_proxies && boxes_left[solver_index] == 0, worker);
+  }
 }
 
 void WorldState::finish_step() {

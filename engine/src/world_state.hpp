@@ -279,14 +279,24 @@ struct WorldState {
     return solver_index >= 0 && static_cast<std::size_t>(solver_index) < stopped.size() &&
            stopped[static_cast<std::size_t>(solver_index)] != 0;
   }
-  void finish_body(std::uint32_t solver_index);
+  void finish_body(std::uint32_t solver_index, std::uint32_t worker);
   void finish_step();
   // continuous.cpp (before finish_step: it needs the step's solver records)
   void solve_continuous();
   // From finish_body: whether the step moved the body fast (continuous collision sweeps it).
   bool moved_fast(std::uint32_t solver_index) const;
   void prefetch_finish_ahead(std::size_t k, std::size_t end, const std::uint8_t* only) const;
-  void record_fast_body(std::uint32_t solver_index, const Aabb& swept, bool covered);
+  void record_fast_body(std::uint32_t solver_index, const Aabb& swept, bool covered,
+                        std::uint32_t worker);
+  const std::vector<std::uint32_t>& fixed_candidates(std::uint32_t fast_body, const Aabb& box,
+                                                     bool covered, bool bullet,
+                                                     std::uint32_t worker);
+  Vec2 quick_shapes(std::uint32_t solver_index, std::uint32_t worker);
+  std::uint64_t passing_shapes(const detail::Body& fast_body,
+                               const std::vector<detail::QuickShape>& quick,
+                               const ShapeGeometry& still, const Pose& still_pose) const;
+  bool passes_unswept(std::uint32_t solver_index, const Aabb& box, bool covered,
+                      std::uint32_t worker);
   void prefetch_pair(const detail::Contact& c) const;
   void prefetch_hulls(const detail::Contact& c) const;
   Vec2 start_center(std::uint32_t solver_index) const;

@@ -69,11 +69,20 @@ BodyId fire(World& world, const Shot& shot, const Vec2& from, const Vec2& direct
   return body;
 }
 
+// Box2D v3's continuous collision: fast bodies swept against still shapes only, their boxes
+// bare after a sweep that stops them nowhere. Most fast bodies are then settled as their step
+// finishes (nothing in their way needs a sweep), the rest by the continuous phase.
+void as_box2d_v3(WorldDef& def) {
+  def.continuous_fast_pairs = false;
+  def.fast_body_margin = false;
+}
+
 // A wall 0.02 thick and 40 tall at x = 0 (a deflected shot slides along it, never off its end);
 // the shot starts 1.5 m to its left, so it reaches the wall within two steps.
-bool passes_wall(const Shot& shot, bool continuous = true) {
+bool passes_wall(const Shot& shot, bool continuous = true, bool v3_settings = false) {
   WorldDef def = zero_gravity();
   def.enable_continuous = continuous;
+  if (v3_settings) as_box2d_v3(def);
   World world(def);
   const BodyId wall = world.create_body({});
   world.create_shape(wall, ShapeDef::box(0.01, 20));
@@ -138,8 +147,10 @@ TEST(Continuous, WithoutItShotsTunnel) {
 
 // Chain terrain: a zigzag of 0.5 m teeth; shots come down at it steeply from above. Nothing
 // may end below the terrain line.
-bool passes_terrain(const Shot& shot) {
-  World world(zero_gravity());
+bool passes_terrain(const Shot& shot, bool v3_settings = false) {
+  WorldDef def = zero_gravity();
+  if (v3_settings) as_box2d_v3(def);
+  World world(def);
   const BodyId ground = world.create_body({});
   std::vector<Vec2> points;
   for (int i = 20; i >= -20; --i) points.emplace_back(0.5 * i, (i % 2 == 0) ? 0.0 : 0.25);
@@ -164,6 +175,92 @@ TEST(Continuous, ShotsAtChainTerrainNeverPassThrough) {
     std::printf("%s: %d of %d went through the terrain\n", projectile_name(k), passed[k],
                 shots / 4);
     EXPECT_EQ(passed[k], 0) << projectile_name(k);
+  }
+}
+
+TEST(Continuous, ShotsNeverPassThroughAtBox2dV3sSettings) {
+  std::mt19937_64 rng(7);
+  int walls[4] = {}, terrain[4] = {};
+  const int shots = 1000;
+  for (int i = 0; i < shots; ++i) {
+    if (passes_wall(random_shot(rng, i), true, true)) ++walls[i % 4];
+    if (passes_terrain(random_shot(rng, i), true)) ++terrain[i % 4];
+  }
+  for (int k = 0; k < 4; ++k) {
+    std::printf("%s: %d of %d passed the wall, %d of %d went through the terrain\n",
+                projectile_name(k), walls[k], shots / 4, terrain[k], shots / 4);
+    EXPECT_EQ(walls[k], 0) << projectile_name(k);
+    EXPECT_EQ(terrain[k], 0) << projectile_name(k);
+  }
+}
+
+// Rain of fast projectiles, spinning, onto shelves of boxes, a thin wall and chain terrain, at
+// Box2D v3's settings: stepped as is, most fast bodies are settled as their step finishes; a
+// sensor far away makes every fast body go through the continuous phase's sweep (sensors see
+// fast bodies along their sweeps). The two must leave every body in the same place, bit for
+// bit, with the same fast bodies and stops.
+struct RainRun {
+  std::vector<Pose> poses;
+  std::size_t fast = 0, hits = 0;
+};
+
+RainRun rain_of_shots(bool far_sensor, int workers) {
+  WorldDef def;
+  def.worker_count = workers;
+  as_box2d_v3(def);
+  World world(def);
+  const BodyId ground = world.create_body({});
+  for (int i = -10; i <= 10; ++i) {
+    world.create_shape(ground, ShapeDef::box(0.25, 0.25, Vec2(i * 0.5, 0)));
+    world.create_shape(ground, ShapeDef::box(0.25, 0.25, Vec2(i * 0.5, -8)));
+  }
+  world.create_shape(ground, ShapeDef::box(6, 0.01, Vec2(0, -4)));
+  std::vector<Vec2> points;
+  for (int i = 24; i >= -24; --i) points.emplace_back(0.25 * i, -12 + ((i % 2 == 0) ? 0.0 : 0.2));
+  world.create_chain(ground, ShapeDef::chain(points));
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<Real> x(-4, 4), height(2, 30), down(5, 200), side(-20, 20);
+  std::vector<BodyId> bodies;
+  for (int i = 0; i < 300; ++i) {
+    Shot shot = random_shot(rng, i);
+    shot.speed = 1;
+    const BodyId body = fire(world, shot, Vec2(x(rng), height(rng)), Vec2(0, 0));
+    world.set_linear_velocity(body, Vec2(side(rng), -down(rng)));
+    bodies.push_back(body);
+  }
+  if (far_sensor) {
+    const BodyId holder = world.create_body({});
+    ShapeDef band = ShapeDef::box(1, 1, Vec2(1000, 1000));
+    band.is_sensor = true;
+    world.create_shape(holder, band);
+  }
+  RainRun run;
+  for (int step = 0; step < 90; ++step) {
+    world.step();
+    run.fast += world.counters().fast_bodies;
+    run.hits += world.counters().continuous_hits;
+    for (const BodyId body : bodies) run.poses.push_back(world.pose(body));
+  }
+  return run;
+}
+
+TEST(Continuous, FastBodiesSettledAsTheirStepFinishesEndAsTheSweepLeavesThem) {
+  const RainRun swept = rain_of_shots(true, 1);
+  std::printf("%zu fast bodies, %zu stopped short, over 90 steps\n", swept.fast, swept.hits);
+  EXPECT_GT(swept.hits, 50u);
+  for (const int workers : {1, 2}) {
+    const RainRun settled = rain_of_shots(false, workers);
+    EXPECT_EQ(settled.fast, swept.fast);
+    EXPECT_EQ(settled.hits, swept.hits);
+    ASSERT_EQ(settled.poses.size(), swept.poses.size());
+    std::size_t differ = 0;
+    for (std::size_t k = 0; k < swept.poses.size(); ++k) {
+      const Pose& a = settled.poses[k];
+      const Pose& b = swept.poses[k];
+      differ += a.position != b.position || a.rotation.cos != b.rotation.cos ||
+                a.rotation.sin != b.rotation.sin;
+    }
+    EXPECT_EQ(differ, 0u) << workers << " workers";
   }
 }
 
