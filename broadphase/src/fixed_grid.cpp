@@ -22,6 +22,7 @@ constexpr std::uint64_t kMaxCellsOfABox = 16;
 void FixedGrid::clear() {
   boxes_.clear();
   cell_begin_.clear();
+  occupied_.clear();
   refs_.clear();
   spanning_.clear();
   cells0_ = cells1_ = 0;
@@ -99,7 +100,11 @@ void FixedGrid::build(const std::vector<Box>& boxes) {
     }
     for_each_cell(boxes_[k], [&](std::size_t cell) { ++cell_begin_[cell + 1]; });
   }
-  for (std::size_t c = 0; c < cell_count; ++c) cell_begin_[c + 1] += cell_begin_[c];
+  occupied_.assign((cell_count + 63) / 64, 0);
+  for (std::size_t c = 0; c < cell_count; ++c) {
+    if (cell_begin_[c + 1] != 0) occupied_[c >> 6] |= std::uint64_t{1} << (c & 63);
+    cell_begin_[c + 1] += cell_begin_[c];
+  }
   refs_.resize(cell_begin_[cell_count]);
   std::vector<std::uint32_t> next(cell_begin_.begin(), cell_begin_.end() - 1);
   for (std::uint32_t k = 0; k < boxes_.size(); ++k) {

@@ -276,17 +276,38 @@ void for_each_face(const ShapeGeometry& geometry, const Pose& pose, Face&& face)
 bool clear_of_a_face(const detail::QuickShape& moving, const ShapeGeometry& still,
                      const Pose& still_pose, Real clearance) {
   if (!moving.has_core) return false;
-  bool clear = false;
+  // The face the shape's middle stays farthest outside of is tried first: when a face clears
+  // the shape, it mostly is that one.
+  std::array<Vec2, kFaceLimit> normals;
+  std::array<Real, kFaceLimit> offsets;
+  std::size_t count = 0, first = 0;
+  Real widest = -std::numeric_limits<Real>::infinity();
   for_each_face(still, still_pose, [&](const Vec2& normal, Real offset) {
-    if (clear) return;
+    const Real gap =
+        std::min(normal.dot(moving.middle_start), normal.dot(moving.middle_end)) - offset;
+    if (gap > widest) {
+      widest = gap;
+      first = count;
+    }
+    normals[count] = normal;
+    offsets[count] = offset;
+    ++count;
+  });
+  const auto clears = [&](std::size_t face) {
+    const Vec2& normal = normals[face];
     Real nearest = std::numeric_limits<Real>::infinity();
     for (std::size_t i = 0; i < moving.count; ++i) {
       nearest = std::min(nearest, std::min(normal.dot(moving.start[i]), normal.dot(moving.end[i])) -
                                       moving.stray[i]);
     }
-    clear = nearest - moving.radius > offset + clearance;
-  });
-  return clear;
+    return nearest - moving.radius > offsets[face] + clearance;
+  };
+  if (count == 0) return false;
+  if (clears(first)) return true;
+  for (std::size_t face = 0; face < count; ++face) {
+    if (face != first && clears(face)) return true;
+  }
+  return false;
 }
 
 // Body `b`'s pose with its centre of mass at `center` and turned by `rotation`, measured from

@@ -53,8 +53,12 @@ class FixedGrid {
 
   std::vector<Placed> boxes_;
   std::vector<std::uint32_t> cell_begin_;  ///< per cell (row-major on axis 1): into refs_, then n
-  std::vector<std::uint32_t> refs_;        ///< indices into boxes_, by cell
-  std::vector<std::uint32_t> spanning_;    ///< boxes over too many cells, looked at by every query
+  /// A bit per cell, set where the cell holds a box: most queries meet only empty cells, and
+  /// these bits stay in the nearest cache where cell_begin_ does not.
+  std::vector<std::uint64_t> occupied_;
+  bool occupied(std::uint32_t cell) const { return (occupied_[cell >> 6] >> (cell & 63) & 1) != 0; }
+  std::vector<std::uint32_t> refs_;      ///< indices into boxes_, by cell
+  std::vector<std::uint32_t> spanning_;  ///< boxes over too many cells, looked at by every query
   Real origin0_ = 0, origin1_ = 0, inverse_cell_ = 0;
   std::uint32_t cells0_ = 0, cells1_ = 0;
 };
@@ -80,6 +84,7 @@ void FixedGrid::query(const Box& q, Found&& found) const {
   for (std::uint32_t c1 = first1; c1 <= last1; ++c1) {
     for (std::uint32_t c0 = first0; c0 <= last0; ++c0) {
       const std::uint32_t cell = c1 * cells0_ + c0;
+      if (!occupied(cell)) continue;
       for (std::uint32_t r = cell_begin_[cell]; r < cell_begin_[cell + 1]; ++r) {
         const Placed& p = boxes_[refs_[r]];
         // A box in several of the query's cells is reported from the first of them.
