@@ -51,9 +51,9 @@ struct QuickShape {
   bool has_core = false;
 };
 
-// A body that moved fast this step: its sweep over the step, the box around it, and the
-// fraction of the step it may keep. finish_body writes it whole while the body's record is at
-// hand: three cache lines.
+// A body that moved fast this step and is left to solve_continuous (ContinuousState::kSwept):
+// its sweep over the step, the box around it, and the fraction of the step it may keep.
+// finish_body writes it whole while the body's record is at hand: three cache lines.
 struct alignas(64) FastBody {
   // The first line holds what every fast body's search reads (most find nothing in their way).
   std::uint32_t body = 0;
