@@ -6,25 +6,32 @@
 #    joint_grid, junkyard, large_pyramid, many_pyramids, rain, smash, spinner, tumbler,
 #    washer), each stepped as Box2D v3's benchmark app steps it (1/60 s, 4 substeps, continuous
 #    on, as many steps as the app takes), at 1 and 2 workers, against our built-in of the same
-#    name three times: at Box2D v3's settings (mink_matched: 4 substeps, 30 Hz contacts of
-#    damping ratio 10, 3 m/s push-out, joints at 60 Hz and damping ratio 2), the same with
-#    continuous collision off (mink_matched_no_ccd, for what continuous collision costs) and at
-#    our own solver defaults (mink_defaults); and Box2D v3 again with its continuous collision
-#    off (box2d_v3_no_ccd), for what it costs Box2D v3 itself. Sleeping is as in Box2D v3's
-#    app in every run: off where the scene turns it off (joint_grid, large_pyramid,
-#    many_pyramids), on elsewhere. A scene we have no built-in for is skipped on our side, with
-#    a message.
+#    name twice: at Box2D v3's settings (mink_matched: 4 substeps, 30 Hz contacts of damping
+#    ratio 10, 3 m/s push-out, joints at 60 Hz and damping ratio 2) and at our own solver
+#    defaults (mink_defaults). Sleeping is as in Box2D v3's app in every run: off where the
+#    scene turns it off (joint_grid, large_pyramid, many_pyramids), on elsewhere. A scene we
+#    have no built-in for is skipped on our side, with a message.
 #    Every run is a process of its own (bench/engine/step_race.hpp). The runs of a scene
 #    and worker count are interleaved: they take turns of 200 ms, one running while the others
 #    are stopped (bench/engine/take_turns.cpp), so a busy moment of a shared machine falls on
 #    all alike; at one worker they all run on the same CPU, so a slow core does too; rounds
 #    repeat the whole suite. Step times are wall times, as in
 #    Box2D v3's app; the first step of a run is not timed, as there, nor the first of each turn.
+# 3. What continuous collision costs, per scene and worker count, in a race of its own after
+#    each race of part 2: mink_matched against the same with continuous collision off
+#    (mink_matched_no_ccd), and Box2D v3 against itself with it off (box2d_v3_no_ccd). Its
+#    turns are 8 steps long, not 200 ms, so that every run times the same steps (all but the
+#    first of each turn) and step i of one run is paired with step i of its twin a few tens of
+#    milliseconds apart; the cost is the median over the paired steps of all rounds of on / off
+#    - 1. The two runs of a pair do not do the same work (the scene goes otherwise with
+#    continuous collision off), but they step the same scene through the same stretch of its
+#    run at the same moment, so neither a busy moment of the machine nor the scene's own
+#    changes over its run fall on one of them alone. (Two runs of one binary, paired so, read
+#    within 1% of each other; as two medians of 200 ms turns they read up to 10% apart.)
 #    It writes
 #      step_v3.csv          case,size,implementation,median_ns: the median wall time of a step
 #                           over the timed steps of all rounds (size: workers; implementation:
-#                           box2d_v3, box2d_v3_no_ccd, mink_matched, mink_matched_no_ccd or
-#                           mink_defaults)
+#                           box2d_v3, mink_matched or mink_defaults)
 #      step_v3_cpu.csv      the same for the CPU time of a step (every thread of the process).
 #                           On a busy machine every process waits for a core now and then; a
 #                           short step mostly falls between two waits and a long one mostly
@@ -33,17 +40,17 @@
 #                           figure on a busy machine; at 2 it is the work of both workers,
 #                           spinning included, not the time a step takes
 #      step_v3_ratios.csv   ours / Box2D v3 per scene, one column per setting and worker count
-#      step_v3_continuous.csv  case,workers,on_ns,off_ns,cost,phase_share,v3_on_ns,v3_off_ns,
-#                           v3_cost:
-#                           mink_matched against mink_matched_no_ccd, the median steps and
-#                           on / off - 1 (the share continuous collision adds), per scene and
-#                           worker count; and the same for Box2D v3 (box2d_v3 against
-#                           box2d_v3_no_ccd, its continuous collision off, when that ran);
-#                           phase_share: the share of mink_matched's step its continuous
-#                           phase takes, measured within each run
+#      step_v3_continuous.csv  case,workers,on_ns,off_ns,cost,total_cost,phase_share,v3_on_ns,
+#                           v3_off_ns,v3_cost,v3_total_cost: part 3 for ours and for Box2D v3:
+#                           the median steps with continuous collision on and off, the cost
+#                           (the median of on / off over paired steps, - 1) and total_cost (the
+#                           paired steps' summed times on / off - 1: the whole run's share,
+#                           which a slow moment of the machine in one turn moves more);
+#                           phase_share: the share of mink_matched's step its continuous phase
+#                           takes, measured within each run of part 2
 #      step_v3_phases.csv   case,workers,implementation,phase,mean_ms: the mean time per step
 #                           of each phase the engine reports (its own names; "step" is the
-#                           whole), over the rounds
+#                           whole), over the rounds of part 2
 #      step_v3.png          those ratios as bars (gnuplot, bench/plot_step_v3.gp)
 #      step_v3_memory.csv   case,implementation,peak_kib: the peak resident memory of the
 #                           scene's process at the first worker count, the most of its rounds
@@ -53,23 +60,25 @@
 #                           a scene whose counts differ from Box2D v3's is named on stderr
 #    Box2D v3 is built from ../shared/rivals/box2d-v3 beside the repository, or from the source
 #    tree named by the CMake cache variable MINK_BOX2D_V3_DIR; without it this part prints why
-#    and is skipped. The target mink_bench_step_v3 builds its programs.
+#    and parts 2 and 3 are skipped. The target mink_bench_step_v3 builds their programs.
 #
 # Usage: bench/run_step.sh BUILD_DIR [Google Benchmark flags for part 1...]
 # Environment:
 #   MINK_BENCH_STEP_RIVALS="box2d-2.4.1 box2d-v3"   which parts to run (default both)
 #   MINK_BENCH_STEP_REPETITIONS=N     part 1: fresh worlds per case and engine (default 3)
-#   MINK_BENCH_STEP_V3_ROUNDS=N       part 2: rounds over the suite (default 1)
-#   MINK_BENCH_STEP_V3_STEPS=N        part 2: N steps per run in every scene instead of the
-#                                     app's counts, or NAME=N,NAME=N for the named scenes only
-#   MINK_BENCH_STEP_V3_SCENES="a b"   part 2: only these scenes (default: all ten)
-#   MINK_BENCH_STEP_V3_WORKERS="1 2"  part 2: worker counts (default 1 and 2)
+#   MINK_BENCH_STEP_V3_ROUNDS=N       parts 2 and 3: rounds over the suite (default 1)
+#   MINK_BENCH_STEP_V3_STEPS=N        parts 2 and 3: N steps per run in every scene instead of
+#                                     the app's counts, or NAME=N,NAME=N for the named scenes
+#   MINK_BENCH_STEP_V3_SCENES="a b"   parts 2 and 3: only these scenes (default: all ten)
+#   MINK_BENCH_STEP_V3_WORKERS="1 2"  parts 2 and 3: worker counts (default 1 and 2)
 #   MINK_BENCH_STEP_V3_IMPLEMENTATIONS="box2d_v3 mink_matched"   part 2: only these (default:
-#                                     box2d_v3 mink_matched mink_matched_no_ccd mink_defaults
-#                                     box2d_v3_no_ccd)
+#                                     box2d_v3 mink_matched mink_defaults; mink_matched_no_ccd
+#                                     and box2d_v3_no_ccd may be named too)
 #   MINK_BENCH_STEP_V3_TURN_MS=T      part 2: length of a turn in ms (default 200)
-#   MINK_BENCH_STEP_V3_SLEEP=off      part 2: sleeping off in every scene of both engines
-#                                     (default app: as Box2D v3's app has it)
+#   MINK_BENCH_STEP_V3_COST=off       part 3 skipped (default on)
+#   MINK_BENCH_STEP_V3_COST_TURN_STEPS=K  part 3: steps per turn (default 8)
+#   MINK_BENCH_STEP_V3_SLEEP=off      parts 2 and 3: sleeping off in every scene of both
+#                                     engines (default app: as Box2D v3's app has it)
 # A quick run: MINK_BENCH_STEP_RIVALS=box2d-v3 MINK_BENCH_STEP_V3_STEPS=60 bench/run_step.sh build
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -109,7 +118,11 @@ workers_list=${MINK_BENCH_STEP_V3_WORKERS:-1 2}
 sleep_mode=${MINK_BENCH_STEP_V3_SLEEP:-app}
 steps_override=${MINK_BENCH_STEP_V3_STEPS:-}
 known_implementations="box2d_v3 mink_matched mink_matched_no_ccd mink_defaults box2d_v3_no_ccd"
-implementations=${MINK_BENCH_STEP_V3_IMPLEMENTATIONS:-$known_implementations}
+implementations=${MINK_BENCH_STEP_V3_IMPLEMENTATIONS:-box2d_v3 mink_matched mink_defaults}
+cost_race=${MINK_BENCH_STEP_V3_COST:-on}
+cost_turn_steps=${MINK_BENCH_STEP_V3_COST_TURN_STEPS:-8}
+# Part 3's pairs, each continuous collision on and off.
+cost_pairs="mink_matched:mink_matched_no_ccd box2d_v3:box2d_v3_no_ccd"
 all_scenes=$("$v3_runner" --list | awk '{ printf "%s ", $1 }')
 scenes=${MINK_BENCH_STEP_V3_SCENES:-$all_scenes}
 for scene in $scenes; do
@@ -143,6 +156,15 @@ for setting in "MINK_BENCH_STEP_V3_ROUNDS=$rounds" "MINK_BENCH_STEP_V3_TURN_MS=$
     exit 2
   fi
 done
+if [ "$cost_race" != on ] && [ "$cost_race" != off ]; then
+  echo "run_step.sh: MINK_BENCH_STEP_V3_COST=$cost_race: expected on or off" >&2
+  exit 2
+fi
+if ! [[ $cost_turn_steps =~ ^[1-9][0-9]*$ ]] || [ "$cost_turn_steps" -lt 2 ]; then
+  echo "run_step.sh: MINK_BENCH_STEP_V3_COST_TURN_STEPS=$cost_turn_steps: expected a whole" \
+    "number of at least 2 (the first step of each turn is not timed)" >&2
+  exit 2
+fi
 
 # The steps for a scene from MINK_BENCH_STEP_V3_STEPS; nothing for the app's count.
 steps_for() {
@@ -163,8 +185,39 @@ failed=""
 started=$SECONDS
 echo "Race against Box2D v3: $rounds round(s), workers: $workers_list, turns of $turn_ms ms," \
   "sleeping: $sleep_mode"
+# race ROUND SCENE WORKERS KIND COMMAND... (the take-turns commands): runs them and sorts their
+# output; KIND main keeps the race and phase lines for part 2's files, cost only prints them.
+race() {
+  local round=$1 scene=$2 workers=$3 kind=$4 status=0 line
+  shift 4
+  # At one worker every run of the race is kept on the same CPU: a core of a shared machine
+  # can be slower than the other for minutes, and a run stopped and continued stays where
+  # it ran, so unpinned runs could spend the whole race on different cores.
+  local pin=()
+  if [ "$workers" = 1 ] && [ -n "$race_cpu" ]; then pin=(--cpu="$race_cpu"); fi
+  "$turns_binary" "${pin[@]}" "$@" >"$work/output" || status=$?
+  while IFS= read -r line; do
+    case $line in
+      race\ *)
+        if [ "$kind" = main ]; then echo "round=$round $line" >>"$work/runs"; fi
+        echo "$line" | awk -v round="$round" -v kind="$kind" '{
+          for (i = 1; i <= NF; ++i) { split($i, kv, "="); f[kv[1]] = kv[2] }
+          printf "round %s  %-13s %d worker(s)  %-19s %9.3f ms/step (CPU %.3f)", round,
+                 f["scene"], f["workers"], f["implementation"], f["median_ns"] / 1e6,
+                 f["cpu_median_ns"] / 1e6
+          if (kind == "main") printf "  peak %6.1f MiB\n", f["peak_kib"] / 1024
+          else printf "  (cost race)\n" }'
+        ;;
+      phase\ *) if [ "$kind" = main ]; then echo "round=$round $line" >>"$work/phases"; fi ;;
+      *) if [ "$round" = 1 ] && [ "$workers" = "$first_workers" ]; then echo "$line"; fi ;;
+    esac
+  done <"$work/output"
+  if [ "$status" -ne 0 ]; then failed+=" $scene/$workers($kind)"; fi
+}
+
 for round in $(seq "$rounds"); do
   for scene in $scenes; do
+    steps=$(steps_for "$scene")
     for workers in $workers_list; do
       # The implementations of one scene and worker count take turns of $turn_ms ms.
       commands=()
@@ -172,33 +225,25 @@ for round in $(seq "$rounds"); do
         runner=$mink_runner
         case $implementation in box2d_v3*) runner=$v3_runner ;; esac
         if [ ${#commands[@]} -gt 0 ]; then commands+=(--and); fi
-        steps=$(steps_for "$scene")
         commands+=("$runner" "$scene" --workers="$workers" --implementation="$implementation"
           --sleep="$sleep_mode" --turn-ms="$turn_ms" --samples="$work/$scene.$workers.$implementation"
           --profile ${steps:+"--steps=$steps"})
       done
-      # At one worker every run of the race is kept on the same CPU: a core of a shared machine
-      # can be slower than the other for minutes, and a run stopped and continued stays where
-      # it ran, so unpinned runs could spend the whole race on different cores.
-      pin=()
-      if [ "$workers" = 1 ] && [ -n "$race_cpu" ]; then pin=(--cpu="$race_cpu"); fi
-      status=0
-      "$turns_binary" "${pin[@]}" "${commands[@]}" >"$work/output" || status=$?
-      while IFS= read -r line; do
-        case $line in
-          race\ *)
-            echo "round=$round $line" >>"$work/runs"
-            echo "$line" | awk -v round="$round" '{
-              for (i = 1; i <= NF; ++i) { split($i, kv, "="); f[kv[1]] = kv[2] }
-              printf "round %s  %-13s %d worker(s)  %-19s %9.3f ms/step (CPU %.3f)" \
-                     "  peak %6.1f MiB\n", round, f["scene"], f["workers"], f["implementation"],
-                     f["median_ns"] / 1e6, f["cpu_median_ns"] / 1e6, f["peak_kib"] / 1024 }'
-            ;;
-          phase\ *) echo "round=$round $line" >>"$work/phases" ;;
-          *) if [ "$round" = 1 ] && [ "$workers" = "$first_workers" ]; then echo "$line"; fi ;;
-        esac
-      done <"$work/output"
-      if [ "$status" -ne 0 ]; then failed+=" $scene/$workers"; fi
+      race "$round" "$scene" "$workers" main "${commands[@]}"
+      if [ "$cost_race" != on ]; then continue; fi
+      # Part 3: each engine on and off, in turns of $cost_turn_steps steps.
+      commands=()
+      for pair in $cost_pairs; do
+        for implementation in "${pair%%:*}" "${pair##*:}"; do
+          runner=$mink_runner
+          case $implementation in box2d_v3*) runner=$v3_runner ;; esac
+          if [ ${#commands[@]} -gt 0 ]; then commands+=(--and); fi
+          commands+=("$runner" "$scene" --workers="$workers" --implementation="$implementation"
+            --sleep="$sleep_mode" --turn-steps="$cost_turn_steps"
+            --samples="$work/cost.$round.$scene.$workers.$implementation" ${steps:+"--steps=$steps"})
+        done
+      done
+      race "$round" "$scene" "$workers" cost "${commands[@]}"
     done
   done
 done
@@ -317,38 +362,55 @@ awk -v scenes="$scenes" -v workers_list="$workers_list" -v implementations="$imp
     }
   }' "$work/phases" >"$phases_csv"
 
-# What continuous collision costs: the matched runs with it on against off, and the share of
-# the step our continuous phase takes (from the phases above, within each run: free of what
-# differs between runs).
+# What continuous collision costs (part 3): step i of each on run against step i of its off
+# twin, round by round. paired_cost SCENE WORKERS ON OFF prints on_ns,off_ns,cost,total_cost
+# (empty fields when the pair did not run).
+paired_cost() {
+  local scene=$1 workers=$2 on=$3 off=$4 files=() round on_file off_file
+  for round in $(seq "$rounds"); do
+    on_file=$work/cost.$round.$scene.$workers.$on
+    off_file=$work/cost.$round.$scene.$workers.$off
+    if [ -s "$on_file" ] && [ -s "$off_file" ]; then files+=("$on_file" "$off_file"); fi
+  done
+  if [ ${#files[@]} -eq 0 ]; then
+    echo ",,,"
+    return
+  fi
+  # Sample lines: wall_ns cpu_ns step. Out: on / off, on_ns, off_ns for each step both timed.
+  awk 'FNR == 1 { ++file }
+       file % 2 == 1 { on[file, $3] = $1; next }
+       ((file - 1, $3) in on) { print on[file - 1, $3] / $1, on[file - 1, $3], $1 }' \
+    "${files[@]}" >"$work/paired"
+  local column medians=()
+  for column in 1 2 3; do
+    medians+=("$(cut -d' ' -f"$column" "$work/paired" | sort -g | awk '
+      { v[NR] = $1 }
+      END { printf "%.6f", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }')")
+  done
+  awk -v ratio="${medians[0]}" -v on="${medians[1]}" -v off="${medians[2]}" '
+    { sum_on += $2; sum_off += $3 }
+    END { printf "%.0f,%.0f,%.4f,%.4f\n", on, off, ratio - 1, sum_on / sum_off - 1 }' \
+    "$work/paired"
+}
 continuous_csv=$results_dir/step_v3_continuous.csv
-awk -F, -v workers_list="$workers_list" -v scenes="$scenes" '
-  FNR == 1 { ++file; next }
-  file == 1 {
-    if ($3 == "mink_matched" && $4 == "continuous") phase[$1 "," $2] = $5
-    if ($3 == "mink_matched" && $4 == "step") whole[$1 "," $2] = $5
-    next
-  }
-  { t[$1 "," $2 "," $3] = $4 }
-  END {
-    print "case,workers,on_ns,off_ns,cost,phase_share,v3_on_ns,v3_off_ns,v3_cost"
-    nw = split(workers_list, w, " ")
-    ns = split(scenes, s, " ")
-    for (i = 1; i <= ns; ++i) {
-      for (j = 1; j <= nw; ++j) {
-        on = t[s[i] "," w[j] ",mink_matched"]
-        off = t[s[i] "," w[j] ",mink_matched_no_ccd"]
-        v3_on = t[s[i] "," w[j] ",box2d_v3"]
-        v3_off = t[s[i] "," w[j] ",box2d_v3_no_ccd"]
-        v3_cost = v3_on != "" && v3_off != "" ? sprintf("%.4f", v3_on / v3_off - 1) : ""
-        key = s[i] "," w[j]
-        share = whole[key] > 0 ? sprintf("%.4f", phase[key] / whole[key]) : ""
-        if (on != "" && off != "") {
-          printf "%s,%s,%s,%s,%.4f,%s,%s,%s,%s\n", s[i], w[j], on, off, on / off - 1, share, v3_on,
-                 v3_off, v3_cost
-        }
-      }
-    }
-  }' "$phases_csv" "$v3_csv" >"$continuous_csv"
+if [ "$cost_race" = on ]; then
+  {
+    echo "case,workers,on_ns,off_ns,cost,total_cost,phase_share,v3_on_ns,v3_off_ns,v3_cost,v3_total_cost"
+    for scene in $scenes; do
+      for workers in $workers_list; do
+        ours=$(paired_cost "$scene" "$workers" mink_matched mink_matched_no_ccd)
+        theirs=$(paired_cost "$scene" "$workers" box2d_v3 box2d_v3_no_ccd)
+        if [ "$ours" = ",,," ]; then continue; fi
+        # The continuous phase's share of the matched step, within each run of part 2.
+        share=$(awk -F, -v key="$scene,$workers,mink_matched" '
+          $1 "," $2 "," $3 == key && $4 == "continuous" { phase = $5 }
+          $1 "," $2 "," $3 == key && $4 == "step" { whole = $5 }
+          END { if (whole > 0) printf "%.4f", phase / whole }' "$phases_csv")
+        echo "$scene,$workers,${ours%,*,*},${ours#*,*,},$share,$theirs"
+      done
+    done
+  } >"$continuous_csv"
+fi
 
 echo
 echo "Ours / Box2D v3 (median step time; below 1: ours is faster), $ratios_csv:"
@@ -356,10 +418,13 @@ column -s, -t "$ratios_csv"
 echo
 echo "The same for CPU time (at 1 worker the time on a core of its own; $cpu_csv):"
 write_ratios "$cpu_csv" 0 | column -s, -t
-echo
-echo "What continuous collision costs (mink_matched / mink_matched_no_ccd - 1; phase_share:" \
-  "the continuous phase's share of the step in mink_matched), $continuous_csv:"
-column -s, -t "$continuous_csv"
+if [ "$cost_race" = on ]; then
+  echo
+  echo "What continuous collision costs (part 3: the median over paired steps of on / off - 1;" \
+    "total_cost: their summed times; phase_share: the continuous phase's share of the step in" \
+    "mink_matched), $continuous_csv:"
+  column -s, -t "$continuous_csv"
+fi
 echo
 echo "Peak memory (KiB, $first_workers worker(s)), $memory_csv:"
 column -s, -t "$memory_csv"

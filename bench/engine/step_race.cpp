@@ -21,7 +21,8 @@ struct Options {
   int workers = 1;
   int steps = 0;  // 0: the suite's count
   int warmup = 1;
-  int turn_ms = 0;  // 0: no turns
+  int turn_ms = 0;     // 0: no turns
+  int turn_steps = 0;  // 0: turns by time (or none)
   std::string samples;
   std::string_view implementation;
   bool sleep_off = false;  // in every scene
@@ -81,6 +82,8 @@ bool parse(int argc, char** argv, const RaceEngine& engine, Options& options) {
       if (!parse_count(arg, "--warmup=", 0, options.warmup)) return false;
     } else if (arg.starts_with("--turn-ms=")) {
       if (!parse_count(arg, "--turn-ms=", 1, options.turn_ms)) return false;
+    } else if (arg.starts_with("--turn-steps=")) {
+      if (!parse_count(arg, "--turn-steps=", 2, options.turn_steps)) return false;
     } else if (arg.starts_with("--samples=")) {
       options.samples = std::string(arg.substr(10));
     } else if (arg.starts_with("--implementation=")) {
@@ -109,8 +112,13 @@ bool parse(int argc, char** argv, const RaceEngine& engine, Options& options) {
   if (options.scene == nullptr) {
     std::fprintf(stderr,
                  "usage: %s SCENE [--workers=N] [--steps=N] [--warmup=K] "
-                 "[--samples=FILE] [--implementation=NAME] [--sleep=app|off] [--profile]\n",
+                 "[--samples=FILE] [--implementation=NAME] [--sleep=app|off] [--profile] "
+                 "[--turn-ms=T | --turn-steps=K]\n",
                  argv[0]);
+    return false;
+  }
+  if (options.turn_ms > 0 && options.turn_steps > 0) {
+    std::fprintf(stderr, "--turn-ms and --turn-steps: turns are by time or by steps, not both\n");
     return false;
   }
   if (options.steps == 0) options.steps = options.scene->steps;
@@ -140,13 +148,15 @@ int run(const Options& options, const RaceEngine& engine) {
     return 0;
   }
   std::vector<long long> times, cpu_times;
+  std::vector<int> timed_steps;
   times.reserve(static_cast<std::size_t>(options.steps));
   cpu_times.reserve(static_cast<std::size_t>(options.steps));
   long long turn_end = 0;  // wall time at which the current turn is over
   std::vector<std::pair<std::string, double>> phases;  // summed over the timed steps
   for (int i = 0; i < options.steps; ++i) {
     bool turn_starts = false;
-    if (options.turn_ms > 0 && clock_ns(CLOCK_MONOTONIC) >= turn_end) {
+    if (options.turn_steps > 0 ? i % options.turn_steps == 0
+                               : options.turn_ms > 0 && clock_ns(CLOCK_MONOTONIC) >= turn_end) {
       std::raise(SIGSTOP);
       turn_starts = true;
       turn_end = clock_ns(CLOCK_MONOTONIC) + options.turn_ms * 1000000LL;
@@ -157,6 +167,7 @@ int run(const Options& options, const RaceEngine& engine) {
     if (i >= options.warmup && !turn_starts) {
       times.push_back(end.wall - start.wall);
       cpu_times.push_back(end.cpu - start.cpu);
+      timed_steps.push_back(i);
       if (options.profile) {
         const auto step_phases = world->profile();
         if (phases.empty()) {
@@ -177,7 +188,7 @@ int run(const Options& options, const RaceEngine& engine) {
       return 1;
     }
     for (std::size_t i = 0; i < times.size(); ++i) {
-      std::fprintf(out, "%lld %lld\n", times[i], cpu_times[i]);
+      std::fprintf(out, "%lld %lld %d\n", times[i], cpu_times[i], timed_steps[i]);
     }
     std::fclose(out);
   }

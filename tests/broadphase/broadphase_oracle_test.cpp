@@ -446,6 +446,120 @@ TEST(SweepAndPruneOracle, FixedQueriesOverEqualClusteredAndRingBounds) {
   }
 }
 
+// fixed_layout() numbers the layout of the fixed proxies: 0 before the first update; the same
+// while only moving proxies move; new (and never another broadphase's) once a fixed proxy is
+// made, moved or destroyed and the update lays them out again. Between the change and that
+// update for_each_touched_fixed finds the changed proxy where it is now. And a box in which
+// for_each_fixed found nothing stays so while the number stands: a query inside it finds only
+// what for_each_touched_fixed finds, as the brute force says.
+TEST(SweepAndPruneOracle, AFixedLayoutStandsUntilAFixedProxyChanges) {
+  std::mt19937_64 random(29);
+  mink::SweepAndPrune fast(0.1);
+  mink::BruteForceBroadphase slow(0.1);
+  mink::PairEvents events;
+  const auto both = [&](const Aabb& box, ProxyKind kind, std::uint64_t data) {
+    const ProxyId id = fast.create_proxy(box, kind, data);
+    EXPECT_EQ(slow.create_proxy(box, kind, data), id);
+    return id;
+  };
+  for (int i = 0; i < 40; ++i) {
+    both(box_at(Vec2(i * 3.0, (i % 5) * 4.0), Vec2(0.5, 0.5)),
+         i % 4 == 1 ? ProxyKind::kinematic : ProxyKind::static_body, i);
+  }
+  std::vector<ProxyId> movers;
+  for (int i = 0; i < 30; ++i) {
+    movers.push_back(
+        both(box_at(Vec2(uniform(random, 0, 120), uniform(random, 0, 16)), Vec2(0.3, 0.3)),
+             ProxyKind::moving, 100 + i));
+  }
+  EXPECT_EQ(fast.fixed_layout(), 0u);
+  fast.update_pairs(events);
+  slow.update_pairs(events);
+  const std::uint64_t first = fast.fixed_layout();
+  EXPECT_NE(first, 0u);
+
+  const auto named_fixed = [](const auto& broadphase, const Aabb& box) {
+    std::vector<ProxyId> out;
+    broadphase.query_fixed(box, out);
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  // Empty boxes of the first layout.
+  std::vector<Aabb> empty;
+  while (empty.size() < 200) {
+    const Aabb box = box_at(Vec2(uniform(random, -5, 125), uniform(random, -5, 21)),
+                            Vec2(uniform(random, 0.1, 2), uniform(random, 0.1, 2)));
+    bool any = false;
+    fast.for_each_fixed(box, [&](ProxyId, std::uint64_t) { any = true; });
+    if (!any) empty.push_back(box);
+  }
+  const auto inside_finds_only_touched = [&] {
+    for (const Aabb& box : empty) {
+      for (int k = 0; k < 5; ++k) {
+        const Vec2 size = box.upper - box.lower;
+        const Vec2 a(box.lower.x() + uniform(random, 0, 1) * size.x(),
+                     box.lower.y() + uniform(random, 0, 1) * size.y());
+        const Vec2 b(a.x() + uniform(random, 0, 1) * (box.upper.x() - a.x()),
+                     a.y() + uniform(random, 0, 1) * (box.upper.y() - a.y()));
+        const Aabb inner{a, b};
+        std::vector<ProxyId> touched;
+        fast.for_each_touched_fixed(inner,
+                                    [&](ProxyId id, std::uint64_t) { touched.push_back(id); });
+        std::sort(touched.begin(), touched.end());
+        ASSERT_EQ(touched, named_fixed(slow, inner));
+      }
+    }
+  };
+  inside_finds_only_touched();
+
+  // Moving proxies move: the layout stands.
+  for (int round = 0; round < 5; ++round) {
+    for (const ProxyId id : movers) {
+      const Aabb moved =
+          box_at(Vec2(uniform(random, 0, 120), uniform(random, 0, 16)), Vec2(0.3, 0.3));
+      fast.move_proxy(id, moved);
+      slow.move_proxy(id, moved);
+    }
+    fast.update_pairs(events);
+    slow.update_pairs(events);
+    EXPECT_EQ(fast.fixed_layout(), first);
+    inside_finds_only_touched();
+  }
+
+  // A fixed proxy made inside an empty box, one moved into another and one destroyed: before
+  // the update the touched ones are found where they are; after it, the layout is new.
+  const ProxyId made = both(empty[0], ProxyKind::static_body, 1000);
+  const ProxyId kinematic = 1;  // made second, kinematic
+  const Aabb moved_to = empty[1];
+  fast.move_proxy(kinematic, moved_to);
+  slow.move_proxy(kinematic, moved_to);
+  fast.destroy_proxy(0);
+  slow.destroy_proxy(0);
+  EXPECT_EQ(fast.fixed_layout(), first);
+  inside_finds_only_touched();
+  for (const Aabb& box : {empty[0], empty[1]}) {
+    std::vector<ProxyId> found;
+    fast.for_each_fixed(box, [&](ProxyId id, std::uint64_t) { found.push_back(id); });
+    std::sort(found.begin(), found.end());
+    EXPECT_EQ(found, named_fixed(slow, box));
+    EXPECT_FALSE(found.empty());
+  }
+  fast.update_pairs(events);
+  slow.update_pairs(events);
+  const std::uint64_t second = fast.fixed_layout();
+  EXPECT_NE(second, 0u);
+  EXPECT_NE(second, first);
+  (void)made;
+
+  // Another broadphase laid out alike has a number of its own.
+  mink::SweepAndPrune other(0.1);
+  other.create_proxy(box_at(Vec2(0, 0), Vec2(0.5, 0.5)), ProxyKind::static_body, 0);
+  other.update_pairs(events);
+  EXPECT_NE(other.fixed_layout(), 0u);
+  EXPECT_NE(other.fixed_layout(), first);
+  EXPECT_NE(other.fixed_layout(), second);
+}
+
 TEST(SweepAndPruneOracle, RebuildsAndChoosesTheWideAxis) {
   mink::SweepAndPrune broadphase(0.1);
   mink::PairEvents events;

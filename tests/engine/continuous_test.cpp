@@ -194,6 +194,65 @@ TEST(Continuous, ShotsNeverPassThroughAtBox2dV3sSettings) {
   }
 }
 
+// A shot in free flight at Box2D v3's settings is looked at against the still shapes a few
+// steps ahead of it (an empty box kept for the steps to come); a wall that comes into that box
+// after the look, made there, moved there or given a shape there, still stops it. Each shot
+// flies three steps first, the wall then appears across its path 3 m ahead, inside the box it
+// was looked at over.
+enum class WallArrives { created, moved, shape_added };
+
+bool passes_wall_arriving(const Shot& shot, WallArrives how) {
+  WorldDef def = zero_gravity();
+  as_box2d_v3(def);
+  World world(def);
+  // A still body far from the path, to be moved into it or given a shape there.
+  const BodyId holder = world.create_body({});
+  world.create_shape(holder, ShapeDef::box(0.5, 0.5, Vec2(0, 0)));
+  world.set_transform(holder, Vec2(0, 500), 0);
+  const BodyId body = fire(world, shot, Vec2(-20, shot.offset), Vec2(1, 0));
+  for (int i = 0; i < 3; ++i) world.step();
+  const Real wall_x = world.position(body).x() + 3;
+  switch (how) {
+    case WallArrives::created: {
+      BodyDef at;
+      at.position = Vec2(wall_x, 0);
+      world.create_shape(world.create_body(at), ShapeDef::box(0.01, 20));
+      break;
+    }
+    case WallArrives::moved: {
+      const BodyId wall = world.create_body({});
+      world.create_shape(wall, ShapeDef::box(0.01, 20));
+      world.step();  // laid out where it is, far above the shot's path
+      world.set_transform(wall, Vec2(wall_x, 0), 0);
+      break;
+    }
+    case WallArrives::shape_added:
+      world.create_shape(holder, ShapeDef::box(0.01, 20, Vec2(wall_x, -500)));
+      break;
+  }
+  for (int i = 0; i < 30; ++i) {
+    world.step();
+    if (world.position(body).x() > wall_x) return true;
+  }
+  return false;
+}
+
+TEST(Continuous, AWallThatComesIntoAFreeFlightsPathStopsIt) {
+  std::mt19937_64 rng(23);
+  const char* names[] = {"made", "moved", "given a shape"};
+  for (const WallArrives how :
+       {WallArrives::created, WallArrives::moved, WallArrives::shape_added}) {
+    int passed = 0;
+    for (int i = 0; i < 100; ++i) {
+      Shot shot = random_shot(rng, i);
+      // 1-3 m a step: the wall is one to three steps ahead, well inside the box looked at.
+      shot.speed = 60 + 120 * (shot.offset + 0.5);
+      passed += passes_wall_arriving(shot, how) ? 1 : 0;
+    }
+    EXPECT_EQ(passed, 0) << "a wall " << names[static_cast<int>(how)] << " in the path";
+  }
+}
+
 // Rain of fast projectiles, spinning, onto shelves of boxes, a thin wall and chain terrain, at
 // Box2D v3's settings: stepped as is, most fast bodies are settled as their step finishes; a
 // sensor far away makes every fast body go through the continuous phase's sweep (sensors see
