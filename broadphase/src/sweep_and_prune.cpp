@@ -1,7 +1,6 @@
 #include "mink/broadphase/sweep_and_prune.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -260,10 +259,6 @@ void SweepAndPrune::refresh_fixed() {
   gather(oversized_);
   fixed_grid_.build(fixed_boxes_);
   fixed_stale_ = false;
-  // Numbered across every broadphase of the process, so a number kept from one is never
-  // another's (a world loaded anew, a second world).
-  static std::atomic<std::uint64_t> last_layout{0};
-  fixed_layout_ = last_layout.fetch_add(1, std::memory_order_relaxed) + 1;
 }
 
 // Pairs that no longer overlap. Only a pair with a touched member can end, and testing it on

@@ -357,18 +357,6 @@ bool all_pass(std::uint64_t passing, std::size_t shape_count) {
          passing == (~std::uint64_t{0} >> (64 - shape_count));
 }
 
-// A fast body's box over its step carried on along the step's motion for some steps more and
-// grown by a quarter of its size (for gravity's pull and turns): where free flight takes it
-// next, for an EmptyBox that serves several steps. It is at most some times the box's own
-// length, as the box holds the step's motion.
-Aabb box_ahead(const Aabb& box, const Vec2& motion) {
-  constexpr Real kSteps = 8;
-  const Vec2 shift = kSteps * motion;
-  const Vec2 size = box.upper - box.lower;
-  const Aabb ahead{box.lower + shift.cwiseMin(Vec2(0, 0)), box.upper + shift.cwiseMax(Vec2(0, 0))};
-  return ahead.fattened(0.25 * std::max(size.x(), size.y()));
-}
-
 }  // namespace
 
 // The first touch of `fast`'s shapes with `other_shape` moving by `other_world_sweep`, if it
@@ -440,12 +428,10 @@ void WorldState::sweep_pair(FastBody& fast, const detail::LocalSweep& local,
 // a fast body's box over the step, in shape order, each once (the order is fixed so the work
 // done is too, and a shape met by several of the body's shapes is swept once): from its
 // contacts when its shapes stayed within their broadphase boxes (the broadphase paired them
-// with all of those), else from queries. `motion`, the body's step, lets a query look ahead
-// for an EmptyBox (none: the query is the box's alone).
+// with all of those), else from queries.
 const std::vector<std::uint32_t>& WorldState::fixed_candidates(std::uint32_t fast_body,
                                                                const Aabb& box, bool covered,
-                                                               bool bullet, std::uint32_t worker,
-                                                               const Vec2* motion) {
+                                                               bool bullet, std::uint32_t worker) {
   std::vector<std::uint32_t>& found = continuous.candidates[worker];
   found.clear();
   if (covered && !bullet) {
@@ -477,21 +463,7 @@ const std::vector<std::uint32_t>& WorldState::fixed_candidates(std::uint32_t fas
       for (const ProxyId proxy : proxies) add_shape(proxy, broadphase.user_data(proxy));
     } else {
       // The box is the body's own swept box, well formed.
-      detail::ContinuousState::EmptyBox& empty = continuous.empty_boxes[fast_body];
-      const std::uint64_t layout = broadphase.fixed_layout();
-      if (layout != 0 && empty.layout == layout && empty.box.contains(box)) {
-        broadphase.for_each_touched_fixed(box, add_shape);
-      } else if (motion == nullptr || layout == 0) {
-        broadphase.for_each_fixed(box, add_shape);
-      } else {
-        const Aabb ahead = box_ahead(box, *motion);
-        bool any = false;
-        broadphase.for_each_fixed(ahead, [&](ProxyId proxy, std::uint64_t user_data) {
-          any = true;
-          if (broadphase.fat_aabb(proxy).overlaps(box)) add_shape(proxy, user_data);
-        });
-        if (!any) empty = {ahead, layout};
-      }
+      broadphase.for_each_fixed(box, add_shape);
     }
   }
   std::sort(found.begin(), found.end());
@@ -541,10 +513,7 @@ std::uint64_t WorldState::passing_shapes(const Body& fast_body,
 bool WorldState::passes_unswept(std::uint32_t solver_index, const Aabb& box, bool covered,
                                 std::uint32_t worker) {
   const std::uint32_t body = solver_to_body[solver_index];
-  const detail::SolverBody& sb = solver_bodies[solver_index];
-  const Vec2 motion(sb.dpx, sb.dpy);
-  const std::vector<std::uint32_t>& found =
-      fixed_candidates(body, box, covered, false, worker, &motion);
+  const std::vector<std::uint32_t>& found = fixed_candidates(body, box, covered, false, worker);
   if (found.empty()) return true;
   const Vec2 frame_origin = quick_shapes(solver_index, worker);
   const std::vector<detail::QuickShape>& quick = continuous.quick[worker];

@@ -120,21 +120,9 @@ struct ContinuousState {
   static constexpr std::uint8_t kClear = 2;
   std::vector<std::uint8_t> is_fast;
   std::vector<FastBody> fast;
-  // Per body slot: a box in which the broadphase found no fixed shape, and the layout of its
-  // fixed shapes it looked at (SweepAndPrune::fixed_layout). While that layout stands, a fast
-  // body whose box over the step stays inside has nothing laid out in its way, and the grid is
-  // not looked at again: the box is taken some steps ahead along the body's motion, so that one
-  // look serves several steps of free flight. It saves time only: the shapes found are the
-  // same.
-  struct EmptyBox {
-    Aabb box;
-    std::uint64_t layout = 0;
-  };
-  std::vector<EmptyBox> empty_boxes;
-  void prepare_marks(std::size_t solver_bodies, std::size_t body_slots, std::uint32_t workers) {
+  void prepare_marks(std::size_t solver_bodies, std::uint32_t workers) {
     is_fast.assign(solver_bodies, kNotFast);
     if (fast.size() < solver_bodies) fast.resize(solver_bodies);
-    if (empty_boxes.size() < body_slots) empty_boxes.resize(body_slots);
     candidates.resize(workers);
     proxies.resize(workers);
     quick.resize(workers);

@@ -522,8 +522,7 @@ void WorldState::solve() {
   }
 
   // Each body's step finished in one visit while its records are at hand, bodies in parallel.
-  if (def.enable_continuous)
-    continuous.prepare_marks(solver_to_body.size(), bodies.size(), tasks.workers());
+  if (def.enable_continuous) continuous.prepare_marks(solver_to_body.size(), tasks.workers());
   boxes_left.assign(solver_to_body.size(), 0);
   solver_turned.resize(step_joints.empty() ? 0 : solver_to_body.size());
   tasks.parallel_for(static_cast<std::uint32_t>(solver_to_body.size()), 128,

@@ -290,8 +290,7 @@ struct WorldState {
                         std::uint32_t worker);
   const std::vector<std::uint32_t>& fixed_candidates(std::uint32_t fast_body, const Aabb& box,
                                                      bool covered, bool bullet,
-                                                     std::uint32_t worker,
-                                                     const Vec2* motion = nullptr);
+                                                     std::uint32_t worker);
   Vec2 quick_shapes(std::uint32_t solver_index, std::uint32_t worker);
   std::uint64_t passing_shapes(const detail::Body& fast_body,
                                const std::vector<detail::QuickShape>& quick,

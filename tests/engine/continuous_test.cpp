@@ -194,11 +194,9 @@ TEST(Continuous, ShotsNeverPassThroughAtBox2dV3sSettings) {
   }
 }
 
-// A shot in free flight at Box2D v3's settings is looked at against the still shapes a few
-// steps ahead of it (an empty box kept for the steps to come); a wall that comes into that box
-// after the look, made there, moved there or given a shape there, still stops it. Each shot
-// flies three steps first, the wall then appears across its path 3 m ahead, inside the box it
-// was looked at over.
+// A wall that comes across a shot's path between two steps, made there, moved there or given a
+// shape there, stops it at Box2D v3's settings, where a fast body's way is looked at as its
+// step finishes: each shot flies three steps first, then the wall appears 3 m ahead of it.
 enum class WallArrives { created, moved, shape_added };
 
 bool passes_wall_arriving(const Shot& shot, WallArrives how) {
@@ -245,7 +243,7 @@ TEST(Continuous, AWallThatComesIntoAFreeFlightsPathStopsIt) {
     int passed = 0;
     for (int i = 0; i < 100; ++i) {
       Shot shot = random_shot(rng, i);
-      // 1-3 m a step: the wall is one to three steps ahead, well inside the box looked at.
+      // 1-3 m a step: the wall is one to three steps ahead.
       shot.speed = 60 + 120 * (shot.offset + 0.5);
       passed += passes_wall_arriving(shot, how) ? 1 : 0;
     }

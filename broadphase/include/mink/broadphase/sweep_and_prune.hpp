@@ -64,15 +64,6 @@ class SweepAndPrune final : public Broadphase {
   /// without a list in between. Continuous collision makes one such query per fast body.
   template <typename Found>
   void for_each_fixed(const Aabb& box, Found&& found) const;
-  /// The layout of the fixed proxies that for_each_fixed reads (all but those touched since
-  /// the last update, which it reads one by one): a number new with each layout, that no other
-  /// broadphase's layout has; 0 while there is none. A box in which for_each_fixed found
-  /// nothing holds none of the laid-out proxies while the number stands, so a query inside it
-  /// need look at the touched ones only (for_each_touched_fixed).
-  std::uint64_t fixed_layout() const { return fixed_stale_ ? 0 : fixed_layout_; }
-  /// The part of for_each_fixed that reads the fixed proxies touched since the last update.
-  template <typename Found>
-  void for_each_touched_fixed(const Aabb& box, Found&& found) const;
 
   // Statistics, for tests and tuning.
   int sweep_axis() const { return sweep_axis_; }
@@ -174,7 +165,6 @@ class SweepAndPrune final : public Broadphase {
   FixedGrid fixed_grid_;
   std::vector<FixedGrid::Box> fixed_boxes_;  ///< scratch for laying it out
   bool fixed_stale_ = true;
-  std::uint64_t fixed_layout_ = 0;  ///< see fixed_layout()
 
   // Scratch, kept to avoid allocating every step.
   std::vector<std::uint32_t> changed_slots_;
@@ -212,15 +202,10 @@ void SweepAndPrune::for_each_fixed(const Aabb& box, Found&& found) const {
       if (touched_[id] == 0) report(id);
     });
   }
-  for_each_touched_fixed(box, found);
-}
-
-template <typename Found>
-void SweepAndPrune::for_each_touched_fixed(const Aabb& box, Found&& found) const {
   // Fixed proxies changed since the last update, at their boxes now.
   for (const ProxyId id : touched_ids_) {
     if ((touched_[id] & kDestroyed) == 0 && store_.is_fixed(id) && store_.fat(id).overlaps(box)) {
-      found(id, store_.user_data(id));
+      report(id);
     }
   }
 }
