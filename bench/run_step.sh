@@ -27,7 +27,7 @@
 #    continuous collision off), but they step the same scene through the same stretch of its
 #    run at the same moment, so neither a busy moment of the machine nor the scene's own
 #    changes over its run fall on one of them alone. (Two runs of one binary, paired so, read
-#    within 1% of each other; as two medians of 200 ms turns they read up to 10% apart.)
+#    within 1.5% of each other; as two medians of 200 ms turns they read up to 10% apart.)
 #    It writes
 #      step_v3.csv          case,size,implementation,median_ns: the median wall time of a step
 #                           over the timed steps of all rounds (size: workers; implementation:
