@@ -215,6 +215,17 @@ race() {
   if [ "$status" -ne 0 ]; then failed+=" $scene/$workers($kind)"; fi
 }
 
+# add_run IMPLEMENTATION SAMPLES [ARGS...]: appends to `commands` (after --and when it holds
+# one already) the run of $scene at $workers workers by that implementation's runner.
+add_run() {
+  local implementation=$1 samples=$2 runner=$mink_runner
+  shift 2
+  case $implementation in box2d_v3*) runner=$v3_runner ;; esac
+  if [ ${#commands[@]} -gt 0 ]; then commands+=(--and); fi
+  commands+=("$runner" "$scene" --workers="$workers" --implementation="$implementation"
+    --sleep="$sleep_mode" --samples="$samples" ${steps:+"--steps=$steps"} "$@")
+}
+
 for round in $(seq "$rounds"); do
   for scene in $scenes; do
     steps=$(steps_for "$scene")
@@ -222,12 +233,8 @@ for round in $(seq "$rounds"); do
       # The implementations of one scene and worker count take turns of $turn_ms ms.
       commands=()
       for implementation in $implementations; do
-        runner=$mink_runner
-        case $implementation in box2d_v3*) runner=$v3_runner ;; esac
-        if [ ${#commands[@]} -gt 0 ]; then commands+=(--and); fi
-        commands+=("$runner" "$scene" --workers="$workers" --implementation="$implementation"
-          --sleep="$sleep_mode" --turn-ms="$turn_ms" --samples="$work/$scene.$workers.$implementation"
-          --profile ${steps:+"--steps=$steps"})
+        add_run "$implementation" "$work/$scene.$workers.$implementation" --turn-ms="$turn_ms" \
+          --profile
       done
       race "$round" "$scene" "$workers" main "${commands[@]}"
       if [ "$cost_race" != on ]; then continue; fi
@@ -235,12 +242,8 @@ for round in $(seq "$rounds"); do
       commands=()
       for pair in $cost_pairs; do
         for implementation in "${pair%%:*}" "${pair##*:}"; do
-          runner=$mink_runner
-          case $implementation in box2d_v3*) runner=$v3_runner ;; esac
-          if [ ${#commands[@]} -gt 0 ]; then commands+=(--and); fi
-          commands+=("$runner" "$scene" --workers="$workers" --implementation="$implementation"
-            --sleep="$sleep_mode" --turn-steps="$cost_turn_steps"
-            --samples="$work/cost.$round.$scene.$workers.$implementation" ${steps:+"--steps=$steps"})
+          add_run "$implementation" "$work/cost.$round.$scene.$workers.$implementation" \
+            --turn-steps="$cost_turn_steps"
         done
       done
       race "$round" "$scene" "$workers" cost "${commands[@]}"
@@ -248,6 +251,13 @@ for round in $(seq "$rounds"); do
   done
 done
 echo "Race against Box2D v3 took $((SECONDS - started)) s"
+
+# column_median COLUMN FILE: the median of the numbers in that space-separated column.
+column_median() {
+  cut -d' ' -f"$1" "$2" | sort -g | awk '
+    { v[NR] = $1 }
+    END { printf "%.6f", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+}
 
 # Medians over the pooled timed steps of every round: wall times (column 1 of the samples)
 # into step_v3.csv, CPU times (column 2) into step_v3_cpu.csv.
@@ -261,9 +271,7 @@ write_medians() {
       for implementation in $implementations; do
         samples=$work/$scene.$workers.$implementation
         if [ ! -s "$samples" ]; then continue; fi
-        cut -d' ' -f"$column" "$samples" | sort -n | awk -v row="$scene,$workers,$implementation" '
-          { v[NR] = $1 }
-          END { printf "%s,%.0f\n", row, NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+        printf "%s,%.0f\n" "$scene,$workers,$implementation" "$(column_median "$column" "$samples")"
       done
     done
   done
@@ -382,11 +390,7 @@ paired_cost() {
        ((file - 1, $3) in on) { print on[file - 1, $3] / $1, on[file - 1, $3], $1 }' \
     "${files[@]}" >"$work/paired"
   local column medians=()
-  for column in 1 2 3; do
-    medians+=("$(cut -d' ' -f"$column" "$work/paired" | sort -g | awk '
-      { v[NR] = $1 }
-      END { printf "%.6f", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }')")
-  done
+  for column in 1 2 3; do medians+=("$(column_median "$column" "$work/paired")"); done
   awk -v ratio="${medians[0]}" -v on="${medians[1]}" -v off="${medians[2]}" '
     { sum_on += $2; sum_off += $3 }
     END { printf "%.0f,%.0f,%.4f,%.4f\n", on, off, ratio - 1, sum_on / sum_off - 1 }' \

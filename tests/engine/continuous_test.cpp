@@ -203,10 +203,11 @@ bool passes_wall_arriving(const Shot& shot, WallArrives how) {
   WorldDef def = zero_gravity();
   as_box2d_v3(def);
   World world(def);
-  // A still body far from the path, to be moved into it or given a shape there.
-  const BodyId holder = world.create_body({});
-  world.create_shape(holder, ShapeDef::box(0.5, 0.5, Vec2(0, 0)));
-  world.set_transform(holder, Vec2(0, 500), 0);
+  // Still bodies far above the path: one to be given a shape there, one to be moved into it.
+  BodyDef far_above;
+  far_above.position = Vec2(0, 500);
+  const BodyId holder = world.create_body(far_above);
+  world.create_shape(holder, ShapeDef::box(0.5, 0.5));
   const BodyId body = fire(world, shot, Vec2(-20, shot.offset), Vec2(1, 0));
   for (int i = 0; i < 3; ++i) world.step();
   const Real wall_x = world.position(body).x() + 3;
@@ -218,9 +219,9 @@ bool passes_wall_arriving(const Shot& shot, WallArrives how) {
       break;
     }
     case WallArrives::moved: {
-      const BodyId wall = world.create_body({});
+      const BodyId wall = world.create_body(far_above);
       world.create_shape(wall, ShapeDef::box(0.01, 20));
-      world.step();  // laid out where it is, far above the shot's path
+      world.step();  // laid out where it is
       world.set_transform(wall, Vec2(wall_x, 0), 0);
       break;
     }
