@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace mink {
 
@@ -23,6 +24,8 @@ void FixedGrid::clear() {
   boxes_.clear();
   cell_begin_.clear();
   occupied_.clear();
+  columns_before_.clear();
+  rows_before_.clear();
   refs_.clear();
   spanning_.clear();
   cells0_ = cells1_ = 0;
@@ -101,10 +104,18 @@ void FixedGrid::build(const std::vector<Box>& boxes) {
     for_each_cell(boxes_[k], [&](std::size_t cell) { ++cell_begin_[cell + 1]; });
   }
   occupied_.assign((cell_count + 63) / 64, 0);
+  columns_before_.assign(std::size_t{cells0_} + 1, 0);
+  rows_before_.assign(std::size_t{cells1_} + 1, 0);
   for (std::size_t c = 0; c < cell_count; ++c) {
-    if (cell_begin_[c + 1] != 0) occupied_[c >> 6] |= std::uint64_t{1} << (c & 63);
+    if (cell_begin_[c + 1] != 0) {
+      occupied_[c >> 6] |= std::uint64_t{1} << (c & 63);
+      columns_before_[c % cells0_ + 1] = 1;
+      rows_before_[c / cells0_ + 1] = 1;
+    }
     cell_begin_[c + 1] += cell_begin_[c];
   }
+  std::partial_sum(columns_before_.begin(), columns_before_.end(), columns_before_.begin());
+  std::partial_sum(rows_before_.begin(), rows_before_.end(), rows_before_.begin());
   refs_.resize(cell_begin_[cell_count]);
   std::vector<std::uint32_t> next(cell_begin_.begin(), cell_begin_.end() - 1);
   for (std::uint32_t k = 0; k < boxes_.size(); ++k) {

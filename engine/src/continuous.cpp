@@ -84,6 +84,9 @@ constexpr std::uint32_t kNoBody = ~std::uint32_t{0};
 // What a body may close on a chain segment in a step, as a share of its thinnest half-width,
 // for the speculative contact alone to hold it (Box2D v3's core fraction).
 constexpr Real kCoreFraction = 0.25;
+// What the cheap tests read of a still polygon found in a fast body's way: the vertices and
+// normals of a box.
+constexpr std::size_t kFacesBytes = 128;
 
 // A shape's middle: the point a chain segment tells its front from its back by.
 Vec2 shape_middle(const ShapeGeometry& geometry) {
@@ -235,26 +238,31 @@ Real middle_crossing(const Vec2& middle, const Sweep& moving_sweep, const SweepE
   return 1;
 }
 
-// Calls face(normal, offset) for each face of a shape standing still at `pose`: the shape lies
-// where normal . x <= offset. Polygons up to kFaceLimit faces and segments have faces worth
-// testing; a circle has none.
+// Calls face(nx, ny, offset) for each face of a shape standing still at `pose`: the shape lies
+// where (nx, ny) . x <= offset. Polygons up to kFaceLimit faces and segments have faces worth
+// testing; a circle has none. In scalars, as clear_of_a_face reads them: a Vec2 made in memory
+// and read back whole stalls the store buffer, and this runs for every still shape near a fast
+// body.
 constexpr std::size_t kFaceLimit = 16;
 
 template <typename Face>
 void for_each_face(const ShapeGeometry& geometry, const Pose& pose, Face&& face) {
+  const Real c = pose.rotation.cos, s = pose.rotation.sin;
+  const Real px = pose.position.x(), py = pose.position.y();
   const auto line = [&](const Vec2& p1, const Vec2& p2, Real radius) {
-    const Vec2 a = pose.apply(p1), b = pose.apply(p2);
-    const Vec2 e = b - a;
-    const Real length = e.norm();
+    const Real ax = c * p1.x() - s * p1.y() + px, ay = s * p1.x() + c * p1.y() + py;
+    const Real ex = c * p2.x() - s * p2.y() + px - ax, ey = s * p2.x() + c * p2.y() + py - ay;
+    const Real length = std::sqrt(ex * ex + ey * ey);
     if (!(length > 0)) return;
-    const Vec2 n(e.y() / length, -e.x() / length);
-    face(n, n.dot(a) + radius);
-    face(Vec2(-n), -n.dot(a) + radius);  // both sides: a segment is a face either way
+    const Real nx = ey / length, ny = -ex / length;
+    const Real along = nx * ax + ny * ay;
+    face(nx, ny, along + radius);
+    face(-nx, -ny, -along + radius);  // both sides: a segment is a face either way
   };
-  if (const auto* s = std::get_if<Segment>(&geometry)) {
-    line(s->point1, s->point2, 0);
-  } else if (const auto* c = std::get_if<ChainSegment>(&geometry)) {
-    line(c->segment.point1, c->segment.point2, 0);
+  if (const auto* seg = std::get_if<Segment>(&geometry)) {
+    line(seg->point1, seg->point2, 0);
+  } else if (const auto* chain = std::get_if<ChainSegment>(&geometry)) {
+    line(chain->segment.point1, chain->segment.point2, 0);
   } else if (const auto* k = std::get_if<Capsule>(&geometry)) {
     line(k->center1, k->center2, k->radius);
   } else if (const auto* p = std::get_if<RoundedPolygon>(&geometry)) {
@@ -262,8 +270,9 @@ void for_each_face(const ShapeGeometry& geometry, const Pose& pose, Face&& face)
     const std::span<const Vec2> n = p->hull.normals();
     if (v.size() > kFaceLimit) return;
     for (std::size_t i = 0; i < v.size(); ++i) {
-      const Vec2 normal = pose.rotation.apply(n[i]);
-      face(normal, normal.dot(pose.apply(v[i])) + p->radius);
+      const Real nx = c * n[i].x() - s * n[i].y(), ny = s * n[i].x() + c * n[i].y();
+      const Real vx = c * v[i].x() - s * v[i].y() + px, vy = s * v[i].x() + c * v[i].y() + py;
+      face(nx, ny, nx * vx + ny * vy + p->radius);
     }
   }
 }
@@ -278,27 +287,29 @@ bool clear_of_a_face(const detail::QuickShape& moving, const ShapeGeometry& stil
   if (!moving.has_core) return false;
   // The face the shape's middle stays farthest outside of is tried first: when a face clears
   // the shape, it mostly is that one.
-  std::array<Vec2, kFaceLimit> normals;
-  std::array<Real, kFaceLimit> offsets;
+  std::array<Real, kFaceLimit> normal_x, normal_y, offsets;
   std::size_t count = 0, first = 0;
   Real widest = -std::numeric_limits<Real>::infinity();
-  for_each_face(still, still_pose, [&](const Vec2& normal, Real offset) {
+  const auto along = [](Real nx, Real ny, const Vec2& p) { return nx * p.x() + ny * p.y(); };
+  for_each_face(still, still_pose, [&](Real nx, Real ny, Real offset) {
     const Real gap =
-        std::min(normal.dot(moving.middle_start), normal.dot(moving.middle_end)) - offset;
+        std::min(along(nx, ny, moving.middle_start), along(nx, ny, moving.middle_end)) - offset;
     if (gap > widest) {
       widest = gap;
       first = count;
     }
-    normals[count] = normal;
+    normal_x[count] = nx;
+    normal_y[count] = ny;
     offsets[count] = offset;
     ++count;
   });
   const auto clears = [&](std::size_t face) {
-    const Vec2& normal = normals[face];
+    const Real nx = normal_x[face], ny = normal_y[face];
     Real nearest = std::numeric_limits<Real>::infinity();
     for (std::size_t i = 0; i < moving.count; ++i) {
-      nearest = std::min(nearest, std::min(normal.dot(moving.start[i]), normal.dot(moving.end[i])) -
-                                      moving.stray[i]);
+      nearest =
+          std::min(nearest, std::min(along(nx, ny, moving.start[i]), along(nx, ny, moving.end[i])) -
+                                moving.stray[i]);
     }
     return nearest - moving.radius > offsets[face] + clearance;
   };
@@ -454,7 +465,11 @@ const std::vector<std::uint32_t>& WorldState::fixed_candidates(std::uint32_t fas
       if (index >= shapes.size()) return;
       const Shape& o = shapes[index];
       if (!o.alive || o.proxy != proxy || o.body == fast_body) return;
-      if (bullet || bodies[o.body].type != BodyType::dynamic) found.push_back(index);
+      if (bullet || bodies[o.body].type != BodyType::dynamic) {
+        found.push_back(index);
+        // The cheap tests read its faces next, which live apart from the shape record.
+        detail::prefetch_polygon(o, kFacesBytes);
+      }
     };
     if (bullet) {
       std::vector<ProxyId>& proxies = continuous.proxies[worker];
@@ -536,19 +551,36 @@ bool WorldState::passes_unswept(std::uint32_t solver_index, const Aabb& box, boo
   return true;
 }
 
+namespace {
+
+// Whether scale (|(x, y)| + reach) > limit, as computed with the square root. Most bodies are
+// far from the limit either way, and bounds on the length from its sides (|x| + |y| above, the
+// larger below) tell without it; the slack covers every rounding, so the answer is always the
+// square root's.
+bool beyond(Real x, Real y, Real reach, Real scale, Real limit) {
+  constexpr Real kSlack = 1e-9;
+  constexpr Real kTiny = 1e-80;  // below it the squares may underflow, and the bounds fail
+  const Real ax = std::abs(x), ay = std::abs(y);
+  if (limit > kTiny) {
+    if (scale * (ax + ay + reach) < limit * (1 - kSlack)) return false;
+    if (scale * (std::max(ax, ay) + reach) > limit * (1 + kSlack)) return true;
+  }
+  return scale * (std::sqrt(x * x + y * y) + reach) > limit;
+}
+
+}  // namespace
+
 // A body moved fast: translation plus turn at the extent against its thinnest half-width.
 bool WorldState::moved_fast(std::uint32_t si) const {
   const Body& b = bodies[solver_to_body[si]];
   if (b.type != BodyType::dynamic || b.shapes.empty()) return false;
+  if (b.bullet) return true;
   const detail::SolverBody& sb = solver_bodies[si];
-  Real moved = std::sqrt(sb.dpx * sb.dpx + sb.dpy * sb.dpy) + std::abs(sb.turn) * b.extent;
-  if (!def.fast_body_margin) {
-    // Box2D v3 counts a body fast also when its velocity would carry it far in a step (a body
-    // just struck has barely moved yet): which bodies' boxes are bare follows it.
-    moved = std::max(moved,
-                     dt * (std::sqrt(sb.vx * sb.vx + sb.vy * sb.vy) + std::abs(sb.w) * b.extent));
-  }
-  return b.bullet || moved > b.continuous_threshold * b.min_extent;
+  const Real limit = b.continuous_threshold * b.min_extent;
+  if (beyond(sb.dpx, sb.dpy, std::abs(sb.turn) * b.extent, 1, limit)) return true;
+  // Box2D v3 counts a body fast also when its velocity would carry it far in a step (a body
+  // just struck has barely moved yet): which bodies' boxes are bare follows it.
+  return !def.fast_body_margin && beyond(sb.vx, sb.vy, std::abs(sb.w) * b.extent, dt, limit);
 }
 
 // From finish_body, while the body's records are at hand: a fast body's record, with its box
@@ -560,7 +592,8 @@ void WorldState::record_fast_body(std::uint32_t solver_index, const Aabb& swept,
   // at hand, they cost solve_continuous nothing. Fast bodies meeting each other, and sensors,
   // need every fast body's sweep.
   if (!b.bullet && !def.continuous_fast_pairs && sensors.empty() &&
-      passes_unswept(solver_index, swept, covered, worker)) {
+      ((!covered && !broadphase.may_meet_fixed(swept)) ||
+       passes_unswept(solver_index, swept, covered, worker))) {
     continuous.is_fast[solver_index] = detail::ContinuousState::kClear;
     return;
   }

@@ -149,6 +149,10 @@ class Twin {
     fast_.query_fixed(box, fast_out);
     slow_.query_fixed(box, slow_out);
     EXPECT_EQ(fast_handles_.named(fast_out), slow_handles_.named(slow_out));
+    // A "no" from the cheap test is the query's answer too.
+    if (!fast_.may_meet_fixed(box)) {
+      EXPECT_TRUE(slow_out.empty());
+    }
   }
   void compare_point_query(const Vec2& point) {
     std::vector<ProxyId> fast_out, slow_out;
@@ -390,8 +394,9 @@ TEST(SweepAndPruneOracle, ClustersThatDriftApart) {
 
 // query_fixed looks in a grid of the fixed entries: fixed sets of one entry, of equal lower
 // bounds, of clustered ones with a far outlier, of a ring, of a drum of boxes too large for
-// the bands, of one floor over many cells among small boxes, and of points all at one place,
-// queried below, above, between and across them, against the brute force.
+// the bands, of one floor over many cells among small boxes, of three shelves far apart, and
+// of points all at one place, queried below, above, between and across them, against the
+// brute force. Where may_meet_fixed says a query finds nothing, the brute force finds nothing.
 TEST(SweepAndPruneOracle, FixedQueriesOverEqualClusteredAndRingBounds) {
   std::mt19937_64 random(19);
   const std::vector<std::function<Aabb(int)>> layouts = {
@@ -413,8 +418,10 @@ TEST(SweepAndPruneOracle, FixedQueriesOverEqualClusteredAndRingBounds) {
         return i == 0 ? box_at(Vec2(0, -2), Vec2(50, 0.5))
                       : box_at(Vec2(i % 8 * 0.7, i / 8 * 0.6), Vec2(0.05, 0.05));
       },
+      [](int i) { return box_at(Vec2(i % 20 * 1.0 - 10, i / 20 * 30.0 - 30), Vec2(0.5, 0.25)); },
       [](int) { return box_at(Vec2(-1, 2), Vec2(0, 0)); },
   };
+  const std::size_t shelves = layouts.size() - 2;
   for (std::size_t l = 0; l < layouts.size(); ++l) {
     mink::SweepAndPrune fast(0.1);
     mink::BruteForceBroadphase slow(0.1);
@@ -429,6 +436,7 @@ TEST(SweepAndPruneOracle, FixedQueriesOverEqualClusteredAndRingBounds) {
     slow.create_proxy(box_at(Vec2(0, 0), Vec2(0.5, 0.5)), ProxyKind::moving, 1000);
     fast.update_pairs(events);
     slow.update_pairs(events);
+    int said_none = 0;
     for (int q = 0; q < 2000; ++q) {
       const Vec2 center(uniform(random, -60, 60), uniform(random, -60, 60));
       const Vec2 half(uniform(random, 0, 3), uniform(random, 0, 3));
@@ -442,6 +450,14 @@ TEST(SweepAndPruneOracle, FixedQueriesOverEqualClusteredAndRingBounds) {
       std::sort(fast_named.begin(), fast_named.end());
       std::sort(slow_named.begin(), slow_named.end());
       ASSERT_EQ(fast_named, slow_named) << "layout " << l << ", query " << q;
+      if (!fast.may_meet_fixed(box)) {
+        ++said_none;
+        ASSERT_TRUE(slow_named.empty()) << "layout " << l << ", query " << q;
+      }
+    }
+    // Between the shelves most queries lie in rows that hold nothing.
+    if (l == shelves) {
+      EXPECT_GT(said_none, 500);
     }
   }
 }

@@ -33,6 +33,20 @@ class FixedGrid {
   /// by the boxes given to build().
   template <typename Found>
   void query(const Box& q, Found&& found) const;
+  /// Whether query(q) may find anything: false when none of q's columns (on axis 0) or none
+  /// of its rows (on axis 1) holds a box, found at the cost of four reads.
+  bool may_find(const Box& q) const {
+    if (boxes_.empty()) return false;
+    if (!spanning_.empty()) return true;
+    // A box overlapping q has a column and a row among q's (cell_on keeps the order of
+    // coordinates).
+    const auto any_in = [&](const std::vector<std::uint32_t>& before, Real lo, Real hi, Real origin,
+                            std::uint32_t cells) {
+      return before[cell_on(hi, origin, cells) + 1] != before[cell_on(lo, origin, cells)];
+    };
+    return any_in(columns_before_, q.lo0, q.hi0, origin0_, cells0_) &&
+           any_in(rows_before_, q.lo1, q.hi1, origin1_, cells1_);
+  }
 
  private:
   struct Placed {
@@ -57,6 +71,10 @@ class FixedGrid {
   /// these bits stay in the nearest cache where cell_begin_ does not.
   std::vector<std::uint64_t> occupied_;
   bool occupied(std::uint32_t cell) const { return (occupied_[cell >> 6] >> (cell & 63) & 1) != 0; }
+  /// Per column on axis 0 and per row on axis 1: how many before it hold a box, then the count
+  /// of all. A fast body's query mostly lies in rows or columns with none at all (a body
+  /// falling between shelves, or beside a wall).
+  std::vector<std::uint32_t> columns_before_, rows_before_;
   std::vector<std::uint32_t> refs_;      ///< indices into boxes_, by cell
   std::vector<std::uint32_t> spanning_;  ///< boxes over too many cells, looked at by every query
   Real origin0_ = 0, origin1_ = 0, inverse_cell_ = 0;
@@ -65,7 +83,7 @@ class FixedGrid {
 
 template <typename Found>
 void FixedGrid::query(const Box& q, Found&& found) const {
-  if (boxes_.empty()) return;
+  if (!may_find(q)) return;
   const std::uint32_t first0 = cell_on(q.lo0, origin0_, cells0_);
   const std::uint32_t last0 = cell_on(q.hi0, origin0_, cells0_);
   const std::uint32_t first1 = cell_on(q.lo1, origin1_, cells1_);

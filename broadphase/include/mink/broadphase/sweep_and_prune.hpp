@@ -64,6 +64,14 @@ class SweepAndPrune final : public Broadphase {
   /// without a list in between. Continuous collision makes one such query per fast body.
   template <typename Found>
   void for_each_fixed(const Aabb& box, Found&& found) const;
+  /// Whether for_each_fixed(box) may find anything (`box` well formed, as there): false,
+  /// cheaply, when no fixed box lies in the grid's rows or columns that `box` spans (most fast
+  /// bodies are far from every obstacle).
+  bool may_meet_fixed(const Aabb& box) const {
+    if (fixed_stale_ || !touched_ids_.empty()) return true;
+    const Entry q = oriented(box);
+    return fixed_grid_.may_find({q.lo0, q.hi0, q.lo1, q.hi1, 0});
+  }
 
   // Statistics, for tests and tuning.
   int sweep_axis() const { return sweep_axis_; }
