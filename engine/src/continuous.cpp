@@ -551,25 +551,6 @@ bool WorldState::passes_unswept(std::uint32_t solver_index, const Aabb& box, boo
   return true;
 }
 
-namespace {
-
-// Whether scale (|(x, y)| + reach) > limit, as computed with the square root. Most bodies are
-// far from the limit either way, and bounds on the length from its sides (|x| + |y| above, the
-// larger below) tell without it; the slack covers every rounding, so the answer is always the
-// square root's.
-bool beyond(Real x, Real y, Real reach, Real scale, Real limit) {
-  constexpr Real kSlack = 1e-9;
-  constexpr Real kTiny = 1e-80;  // below it the squares may underflow, and the bounds fail
-  const Real ax = std::abs(x), ay = std::abs(y);
-  if (limit > kTiny) {
-    if (scale * (ax + ay + reach) < limit * (1 - kSlack)) return false;
-    if (scale * (std::max(ax, ay) + reach) > limit * (1 + kSlack)) return true;
-  }
-  return scale * (std::sqrt(x * x + y * y) + reach) > limit;
-}
-
-}  // namespace
-
 // A body moved fast: translation plus turn at the extent against its thinnest half-width.
 bool WorldState::moved_fast(std::uint32_t si) const {
   const Body& b = bodies[solver_to_body[si]];
@@ -577,10 +558,11 @@ bool WorldState::moved_fast(std::uint32_t si) const {
   if (b.bullet) return true;
   const detail::SolverBody& sb = solver_bodies[si];
   const Real limit = b.continuous_threshold * b.min_extent;
-  if (beyond(sb.dpx, sb.dpy, std::abs(sb.turn) * b.extent, 1, limit)) return true;
+  if (detail::travels_beyond(sb.dpx, sb.dpy, std::abs(sb.turn) * b.extent, 1, limit)) return true;
   // Box2D v3 counts a body fast also when its velocity would carry it far in a step (a body
   // just struck has barely moved yet): which bodies' boxes are bare follows it.
-  return !def.fast_body_margin && beyond(sb.vx, sb.vy, std::abs(sb.w) * b.extent, dt, limit);
+  return !def.fast_body_margin &&
+         detail::travels_beyond(sb.vx, sb.vy, std::abs(sb.w) * b.extent, dt, limit);
 }
 
 // From finish_body, while the body's records are at hand: a fast body's record, with its box
