@@ -252,7 +252,7 @@ void SweepAndPrune::refresh_fixed() {
   fixed_boxes_.clear();
   const auto gather = [&](const std::vector<Entry>& entries) {
     for (const Entry& e : entries) {
-      if (e.is_fixed != 0) fixed_boxes_.push_back({e.lo0, e.hi0, e.lo1, e.hi1, e.id});
+      if (e.is_fixed != 0) fixed_boxes_.push_back(grid_box(e));
     }
   };
   gather(entries_);

@@ -247,15 +247,25 @@ constexpr std::size_t kFaceLimit = 16;
 
 template <typename Face>
 void for_each_face(const ShapeGeometry& geometry, const Pose& pose, Face&& face) {
+  struct Point {
+    Real x, y;
+  };
   const Real c = pose.rotation.cos, s = pose.rotation.sin;
-  const Real px = pose.position.x(), py = pose.position.y();
+  // As Rotation::apply and Pose::apply.
+  const auto turned = [&](const Vec2& v) {
+    return Point{c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+  };
+  const auto placed = [&](const Vec2& v) {
+    const Point t = turned(v);
+    return Point{t.x + pose.position.x(), t.y + pose.position.y()};
+  };
   const auto line = [&](const Vec2& p1, const Vec2& p2, Real radius) {
-    const Real ax = c * p1.x() - s * p1.y() + px, ay = s * p1.x() + c * p1.y() + py;
-    const Real ex = c * p2.x() - s * p2.y() + px - ax, ey = s * p2.x() + c * p2.y() + py - ay;
+    const Point a = placed(p1), b = placed(p2);
+    const Real ex = b.x - a.x, ey = b.y - a.y;
     const Real length = std::sqrt(ex * ex + ey * ey);
     if (!(length > 0)) return;
     const Real nx = ey / length, ny = -ex / length;
-    const Real along = nx * ax + ny * ay;
+    const Real along = nx * a.x + ny * a.y;
     face(nx, ny, along + radius);
     face(-nx, -ny, -along + radius);  // both sides: a segment is a face either way
   };
@@ -270,9 +280,8 @@ void for_each_face(const ShapeGeometry& geometry, const Pose& pose, Face&& face)
     const std::span<const Vec2> n = p->hull.normals();
     if (v.size() > kFaceLimit) return;
     for (std::size_t i = 0; i < v.size(); ++i) {
-      const Real nx = c * n[i].x() - s * n[i].y(), ny = s * n[i].x() + c * n[i].y();
-      const Real vx = c * v[i].x() - s * v[i].y() + px, vy = s * v[i].x() + c * v[i].y() + py;
-      face(nx, ny, nx * vx + ny * vy + p->radius);
+      const Point normal = turned(n[i]), vertex = placed(v[i]);
+      face(normal.x, normal.y, normal.x * vertex.x + normal.y * vertex.y + p->radius);
     }
   }
 }
@@ -527,6 +536,8 @@ std::uint64_t WorldState::passing_shapes(const Body& fast_body,
 // way is left to solve_continuous.
 bool WorldState::passes_unswept(std::uint32_t solver_index, const Aabb& box, bool covered,
                                 std::uint32_t worker) {
+  // Most fast bodies are far from every obstacle, and the broadphase tells so at once.
+  if (!covered && !broadphase.may_meet_fixed(box)) return true;
   const std::uint32_t body = solver_to_body[solver_index];
   const std::vector<std::uint32_t>& found = fixed_candidates(body, box, covered, false, worker);
   if (found.empty()) return true;
@@ -574,8 +585,7 @@ void WorldState::record_fast_body(std::uint32_t solver_index, const Aabb& swept,
   // at hand, they cost solve_continuous nothing. Fast bodies meeting each other, and sensors,
   // need every fast body's sweep.
   if (!b.bullet && !def.continuous_fast_pairs && sensors.empty() &&
-      ((!covered && !broadphase.may_meet_fixed(swept)) ||
-       passes_unswept(solver_index, swept, covered, worker))) {
+      passes_unswept(solver_index, swept, covered, worker)) {
     continuous.is_fast[solver_index] = detail::ContinuousState::kClear;
     return;
   }

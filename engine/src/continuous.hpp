@@ -160,10 +160,10 @@ inline bool travels_beyond(Real x, Real y, Real reach, Real scale, Real limit) {
   // Beyond these the squares may underflow or overflow, and the square root then answers
   // otherwise than the bounds.
   constexpr Real kTiny = 1e-80, kHuge = 1e150;
-  const Real ax = std::abs(x), ay = std::abs(y);
-  if (limit > kTiny && std::max(ax, ay) < kHuge) {
+  const Real ax = std::abs(x), ay = std::abs(y), larger = std::max(ax, ay);
+  if (limit > kTiny && larger < kHuge) {
     if (scale * (ax + ay + reach) < limit * (1 - kSlack)) return false;
-    if (scale * (std::max(ax, ay) + reach) > limit * (1 + kSlack)) return true;
+    if (scale * (larger + reach) > limit * (1 + kSlack)) return true;
   }
   return scale * (std::sqrt(x * x + y * y) + reach) > limit;
 }

@@ -69,8 +69,7 @@ class SweepAndPrune final : public Broadphase {
   /// bodies are far from every obstacle).
   bool may_meet_fixed(const Aabb& box) const {
     if (fixed_stale_ || !touched_ids_.empty()) return true;
-    const Entry q = oriented(box);
-    return fixed_grid_.may_find({q.lo0, q.hi0, q.lo1, q.hi1, 0});
+    return fixed_grid_.may_find(grid_box(oriented(box)));
   }
 
   // Statistics, for tests and tuning.
@@ -114,6 +113,8 @@ class SweepAndPrune final : public Broadphase {
   Entry make_entry(ProxyId id, const Aabb& box) const;
   /// Only the box of an entry: enough for overlap().
   Entry oriented(const Aabb& box) const;
+  /// An entry as the fixed grid takes it.
+  static FixedGrid::Box grid_box(const Entry& e) { return {e.lo0, e.hi0, e.lo1, e.hi1, e.id}; }
   bool is_oversized(const Entry& entry) const;
   std::uint32_t band_of(Real band_coordinate) const;
 
@@ -206,7 +207,7 @@ void SweepAndPrune::for_each_fixed(const Aabb& box, Found&& found) const {
     sweep_fixed(q, ids);
     for (const ProxyId id : ids) report(id);
   } else {
-    fixed_grid_.query({q.lo0, q.hi0, q.lo1, q.hi1, 0}, [&](ProxyId id) {
+    fixed_grid_.query(grid_box(q), [&](ProxyId id) {
       if (touched_[id] == 0) report(id);
     });
   }
